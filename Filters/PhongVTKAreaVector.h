@@ -1,0 +1,722 @@
+/**
+ * @file PhongVTKAreaVector.h
+ * @brief Private arithmetic kernels of vtkPolygonNormals and vtkVisibleArea: the summed
+ * cross-product rule w = sum_i (p_i - p0) x (p_(i+1) - p0) in four accuracy modes.
+ *
+ * The kernels know nothing about VTK data structures: a polygon is a point coordinate array and a
+ * function mapping the polygon's vertex index to a point id. One loop skeleton (`AccumulateFan`)
+ * serves every mode; the modes differ only in the arithmetic type plugged into it.
+ *
+ * Error bounds (u = 2^-53 for double, 2^-24 for float; T = number of fan triangles = n - 2;
+ * P_c = sum of |products| entering component c, i.e. the condition of the component):
+ *
+ * | mode        | area vector component c                  | unit normal                          |
+ * |-------------|------------------------------------------|--------------------------------------|
+ * | FAST        | (T + 3) u_f P_c (float arithmetic)       | + 3 u_f                              |
+ * | DOUBLE      | (T + 3) u P_c                            | + 3 u                                |
+ * | COMPENSATED | u |w_c| + (T + 65) u^2 P_c (first order)  | + 3 u (a few ulp unless P_c >
+ * |w_c|/u) | | EXACT       | exact (certified double-double, or GMP)  | < 1 ulp per component
+ * (faithful)     |
+ *
+ * Every mode is protected against overflow and underflow: when the direct evaluation leaves the
+ * safe exponent window, the polygon is re-evaluated on differences scaled by an exact power of two.
+ * Non-finite coordinates give status NonFinite and a zero normal; a zero area vector gives status
+ * Degenerate and a zero normal (for EXACT: exactly when the exact area vector is zero).
+ */
+#ifndef PhongVTKAreaVector_h
+#define PhongVTKAreaVector_h
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace phongvtk
+{
+
+/// Accuracy modes, numbered as vtkPolygonNormals::FAST ... EXACT.
+enum class Accuracy : int
+{
+  Fast = 0,
+  Double = 1,
+  Compensated = 2,
+  Exact = 3
+};
+
+/// Values of the NormalStatus cell array.
+enum NormalStatus : std::uint8_t
+{
+  StatusOk = 0,
+  StatusDegenerate = 1,
+  StatusNonFinite = 2,
+  StatusNotSurface = 3
+};
+
+/**
+ * Result for one polygon. The true area vector (twice the area, as a vector) is
+ * `Vector * 2^Exponent`; Exponent is zero except for polygons that needed rescaling.
+ */
+struct AreaVector
+{
+  double Normal[3];
+  double Vector[3];
+  double Length; // |Vector|
+  int Exponent;
+  std::uint8_t Status;
+
+  void SetZero(std::uint8_t status)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      this->Normal[c] = 0.0;
+      this->Vector[c] = 0.0;
+    }
+    this->Length = 0.0;
+    this->Exponent = 0;
+    this->Status = status;
+  }
+};
+
+namespace detail
+{
+#if defined(__GNUC__)
+#define PHONGVTK_INLINE inline __attribute__((always_inline))
+#else
+#define PHONGVTK_INLINE inline
+#endif
+
+//------------------------------------------------------------------------------
+// Error-free transformations (Knuth's TwoSum, FMA-based TwoProduct).
+PHONGVTK_INLINE void TwoSum(double a, double b, double& s, double& e)
+{
+  s = a + b;
+  const double bb = s - a;
+  e = (a - (s - bb)) + (b - bb);
+}
+
+PHONGVTK_INLINE void FastTwoSum(double a, double b, double& s, double& e)
+{
+  s = a + b;
+  e = b - (s - a);
+}
+
+PHONGVTK_INLINE double Fma(double a, double b, double c)
+{
+#if defined(__FMA__)
+  return __builtin_fma(a, b, c);
+#else
+  return std::fma(a, b, c);
+#endif
+}
+
+PHONGVTK_INLINE void TwoProduct(double a, double b, double& p, double& e)
+{
+  p = a * b;
+  e = Fma(a, b, -p);
+}
+
+/// A double-double number hi + lo with |lo| <= ulp(hi)/2.
+struct DD
+{
+  double Hi;
+  double Lo;
+};
+
+PHONGVTK_INLINE DD Add(DD a, DD b)
+{
+  double s, e, t, f;
+  TwoSum(a.Hi, b.Hi, s, e);
+  TwoSum(a.Lo, b.Lo, t, f);
+  e += t;
+  FastTwoSum(s, e, s, e);
+  e += f;
+  FastTwoSum(s, e, s, e);
+  return { s, e };
+}
+
+PHONGVTK_INLINE double MaxAbs3(const double v[3])
+{
+  return std::max(std::fabs(v[0]), std::max(std::fabs(v[1]), std::fabs(v[2])));
+}
+
+/// Exact power-of-two scaling by 2^k (std::ldexp is exact unless the result leaves the range).
+PHONGVTK_INLINE double Scale2(double x, int k)
+{
+  return std::ldexp(x, k);
+}
+
+/**
+ * Unit vector and length of a double vector, safe for every finite input: when the largest
+ * component leaves [2^-500, 2^500] the vector is first scaled by an exact power of two.
+ * Returns false (and leaves n untouched) for the zero vector.
+ */
+inline bool NormalizeDouble(const double w[3], double n[3], double& length, int& exponent)
+{
+  double m = MaxAbs3(w);
+  exponent = 0;
+  double v[3] = { w[0], w[1], w[2] };
+  if (!(m >= 0x1p-500 && m <= 0x1p500))
+  {
+    if (m == 0.0)
+    {
+      return false;
+    }
+    const int k = std::ilogb(m);
+    for (int c = 0; c < 3; ++c)
+    {
+      v[c] = Scale2(v[c], -k);
+    }
+    exponent = k;
+  }
+  const double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  for (int c = 0; c < 3; ++c)
+  {
+    n[c] = v[c] / len;
+  }
+  length = len;
+  return true;
+}
+
+/**
+ * Faithful unit vector of a double-double vector: each returned component is within 1 ulp of the
+ * exact w_c/|w| when every component of w carries a relative error below 2^-56. The norm,
+ * square root and quotients are evaluated in double-double (error ~2^-100), so the only
+ * rounding that matters is the final one to double. Returns false for the zero vector.
+ */
+inline bool NormalizeFaithful(const DD w[3], double n[3], double& length, int& exponent)
+{
+  const double m = std::max(std::fabs(w[0].Hi), std::max(std::fabs(w[1].Hi), std::fabs(w[2].Hi)));
+  if (m == 0.0)
+  {
+    return false;
+  }
+  const int k = std::ilogb(m);
+  DD v[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    v[c] = { Scale2(w[c].Hi, -k), Scale2(w[c].Lo, -k) };
+  }
+  DD s = { 0.0, 0.0 };
+  for (int c = 0; c < 3; ++c)
+  {
+    double p, e;
+    TwoProduct(v[c].Hi, v[c].Hi, p, e);
+    e += 2.0 * v[c].Hi * v[c].Lo;
+    s = Add(s, { p, e });
+  }
+  // sqrt in double-double: one Newton correction of the double square root.
+  const double r = std::sqrt(s.Hi);
+  const double residual = Fma(-r, r, s.Hi) + s.Lo;
+  DD norm;
+  FastTwoSum(r, residual / (2.0 * r), norm.Hi, norm.Lo);
+  for (int c = 0; c < 3; ++c)
+  {
+    const double q1 = v[c].Hi / norm.Hi;
+    // remainder of (v.Hi + v.Lo) - q1 * (norm.Hi + norm.Lo), the first product exactly.
+    const double rem = Fma(-q1, norm.Hi, v[c].Hi) + (v[c].Lo - q1 * norm.Lo);
+    n[c] = q1 + rem / norm.Hi;
+  }
+  length = norm.Hi;
+  exponent = k;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+/// Scaling applied to the differences on the slow path: d = ((p * Pre) - (p0 * Pre)) * 2^Shift.
+struct Scaling
+{
+  double Pre = 1.0;
+  int Shift = 0;
+};
+
+/**
+ * The loop skeleton shared by every accuracy mode: w = sum over the fan from p0.
+ * `vertex(i)` returns a pointer to the coordinates of the polygon's i-th vertex.
+ */
+template <bool Scaled, class Arith, class VertexFn>
+PHONGVTK_INLINE void AccumulateFan(Arith& acc, const VertexFn& vertex, std::int64_t n,
+                                   const Scaling& scaling)
+{
+  using Diff = typename Arith::Diff;
+  const auto* p0 = vertex(0);
+  Diff prev = Arith::template Difference<Scaled>(vertex(1), p0, scaling);
+  for (std::int64_t i = 2; i < n; ++i)
+  {
+    const Diff next = Arith::template Difference<Scaled>(vertex(i), p0, scaling);
+    acc.Add(prev, next);
+    prev = next;
+  }
+}
+
+template <bool Scaled, class T>
+PHONGVTK_INLINE double ScaledDifference(T a, T b, const Scaling& s)
+{
+  if (!Scaled)
+  {
+    return static_cast<double>(a) - static_cast<double>(b);
+  }
+  const double d = static_cast<double>(a) * s.Pre - static_cast<double>(b) * s.Pre;
+  return Scale2(d, s.Shift);
+}
+
+//------------------------------------------------------------------------------
+/// FAST: float32 arithmetic. Differences of nearby points are taken in the points' own
+/// precision (exact by Sterbenz's lemma for double points too), then everything is float.
+template <class T>
+struct FastArith
+{
+  struct Diff
+  {
+    float V[3];
+  };
+  float W[3] = { 0.0f, 0.0f, 0.0f };
+
+  template <bool Scaled>
+  static PHONGVTK_INLINE Diff Difference(const T* p, const T* p0, const Scaling& s)
+  {
+    Diff d;
+    for (int c = 0; c < 3; ++c)
+    {
+      d.V[c] = Scaled ? static_cast<float>(ScaledDifference<true>(p[c], p0[c], s))
+                      : static_cast<float>(p[c] - p0[c]);
+    }
+    return d;
+  }
+
+  PHONGVTK_INLINE void Add(const Diff& a, const Diff& b)
+  {
+    this->W[0] += a.V[1] * b.V[2] - a.V[2] * b.V[1];
+    this->W[1] += a.V[2] * b.V[0] - a.V[0] * b.V[2];
+    this->W[2] += a.V[0] * b.V[1] - a.V[1] * b.V[0];
+  }
+
+  /// Direct result if it is inside float's safe window, else false (caller rescales).
+  PHONGVTK_INLINE bool Finish(AreaVector& out, bool mustSucceed) const
+  {
+    const float m =
+      std::max(std::fabs(this->W[0]), std::max(std::fabs(this->W[1]), std::fabs(this->W[2])));
+    if (m >= 0x1p-60f && m <= 0x1p60f)
+    {
+      const float len =
+        std::sqrt(this->W[0] * this->W[0] + this->W[1] * this->W[1] + this->W[2] * this->W[2]);
+      const float inv = 1.0f / len;
+      for (int c = 0; c < 3; ++c)
+      {
+        out.Normal[c] = this->W[c] * inv;
+        out.Vector[c] = this->W[c];
+      }
+      out.Length = len;
+      out.Exponent = 0;
+      out.Status = StatusOk;
+      return true;
+    }
+    if (!mustSucceed)
+    {
+      return false;
+    }
+    const double w[3] = { this->W[0], this->W[1], this->W[2] };
+    return FinishDouble(w, out);
+  }
+
+  static bool FinishDouble(const double w[3], AreaVector& out)
+  {
+    int k;
+    if (!(std::isfinite(w[0]) && std::isfinite(w[1]) && std::isfinite(w[2])) ||
+        !NormalizeDouble(w, out.Normal, out.Length, k))
+    {
+      out.SetZero(StatusDegenerate);
+      return true;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      out.Vector[c] = Scale2(w[c], -k);
+      out.Normal[c] = static_cast<float>(out.Normal[c]);
+    }
+    out.Exponent = k;
+    out.Status = StatusOk;
+    return true;
+  }
+};
+
+//------------------------------------------------------------------------------
+/// DOUBLE: double arithmetic, fan from p0 (what VTK does).
+template <class T>
+struct DoubleArith
+{
+  struct Diff
+  {
+    double V[3];
+  };
+  double W[3] = { 0.0, 0.0, 0.0 };
+
+  template <bool Scaled>
+  static PHONGVTK_INLINE Diff Difference(const T* p, const T* p0, const Scaling& s)
+  {
+    Diff d;
+    for (int c = 0; c < 3; ++c)
+    {
+      d.V[c] = ScaledDifference<Scaled>(p[c], p0[c], s);
+    }
+    return d;
+  }
+
+  PHONGVTK_INLINE void Add(const Diff& a, const Diff& b)
+  {
+    this->W[0] += a.V[1] * b.V[2] - a.V[2] * b.V[1];
+    this->W[1] += a.V[2] * b.V[0] - a.V[0] * b.V[2];
+    this->W[2] += a.V[0] * b.V[1] - a.V[1] * b.V[0];
+  }
+
+  PHONGVTK_INLINE bool Finish(AreaVector& out, bool mustSucceed) const
+  {
+    return FinishVector(this->W, out, mustSucceed);
+  }
+
+  static PHONGVTK_INLINE bool FinishVector(const double w[3], AreaVector& out, bool mustSucceed)
+  {
+    const double m = MaxAbs3(w);
+    if (m >= 0x1p-500 && m <= 0x1p500)
+    {
+      const double len = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+      for (int c = 0; c < 3; ++c)
+      {
+        out.Normal[c] = w[c] / len;
+        out.Vector[c] = w[c];
+      }
+      out.Length = len;
+      out.Exponent = 0;
+      out.Status = StatusOk;
+      return true;
+    }
+    if (!mustSucceed)
+    {
+      return false;
+    }
+    int k;
+    if (!std::isfinite(m) || !NormalizeDouble(w, out.Normal, out.Length, k))
+    {
+      out.SetZero(StatusDegenerate);
+      return true;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      out.Vector[c] = Scale2(w[c], -k);
+    }
+    out.Exponent = k;
+    out.Status = StatusOk;
+    return true;
+  }
+};
+
+//------------------------------------------------------------------------------
+/**
+ * COMPENSATED (and the filter stage of EXACT): the differences are split into exact
+ * double-double values (TwoDiff), every product is split by an FMA TwoProduct, the leading parts
+ * are summed with TwoSum and every first-order error term is kept in a second accumulator. The
+ * neglected terms are the second-order products of the differences' low parts and the rounding
+ * of the error accumulator: |error of w_c| <= 64 u^2 P_c + 1.01 (T + 1) u M_c + u |Err_c| where
+ * M_c is the sum of the magnitudes added to the error accumulator Err_c.
+ * With `TrackBound`, P_c and M_c are accumulated so that EXACT can certify the result.
+ */
+template <class T, bool TrackBound>
+struct CompensatedArith
+{
+  struct Diff
+  {
+    double Hi[3];
+    double Lo[3];
+  };
+  double S[3] = { 0.0, 0.0, 0.0 };            // leading sum
+  double Err[3] = { 0.0, 0.0, 0.0 };          // every error term of the leading sum and products
+  double Permanent[3] = { 0.0, 0.0, 0.0 };    // P_c, sum of |products| (only with TrackBound)
+  double ErrMagnitude[3] = { 0.0, 0.0, 0.0 }; // M_c (only with TrackBound)
+  std::int64_t Triangles = 0;
+
+  template <bool Scaled>
+  static PHONGVTK_INLINE Diff Difference(const T* p, const T* p0, const Scaling& s)
+  {
+    Diff d;
+    for (int c = 0; c < 3; ++c)
+    {
+      if (Scaled)
+      {
+        TwoSum(static_cast<double>(p[c]) * s.Pre, -(static_cast<double>(p0[c]) * s.Pre), d.Hi[c],
+               d.Lo[c]);
+        d.Hi[c] = Scale2(d.Hi[c], s.Shift);
+        d.Lo[c] = Scale2(d.Lo[c], s.Shift);
+      }
+      else
+      {
+        TwoSum(static_cast<double>(p[c]), -static_cast<double>(p0[c]), d.Hi[c], d.Lo[c]);
+      }
+    }
+    return d;
+  }
+
+  PHONGVTK_INLINE void AddComponent(int c, int i, int j, const Diff& a, const Diff& b)
+  {
+    // a_i b_j - a_j b_i with a = ah + al, b = bh + bl; al * bl is second order and dropped.
+    double p1, e1, p2, e2;
+    TwoProduct(a.Hi[i], b.Hi[j], p1, e1);
+    TwoProduct(a.Hi[j], b.Hi[i], p2, e2);
+    double s, e;
+    TwoSum(p1, -p2, s, e);
+    double t, f;
+    TwoSum(this->S[c], s, t, f);
+    this->S[c] = t;
+    const double first =
+      Fma(a.Hi[i], b.Lo[j], Fma(a.Lo[i], b.Hi[j], Fma(-a.Hi[j], b.Lo[i], -(a.Lo[j] * b.Hi[i]))));
+    const double err = (e + f) + ((e1 - e2) + first);
+    this->Err[c] += err;
+    if (TrackBound)
+    {
+      this->Permanent[c] += std::fabs(p1) + std::fabs(p2);
+      this->ErrMagnitude[c] += std::fabs(err);
+    }
+  }
+
+  PHONGVTK_INLINE void Add(const Diff& a, const Diff& b)
+  {
+    this->AddComponent(0, 1, 2, a, b);
+    this->AddComponent(1, 2, 0, a, b);
+    this->AddComponent(2, 0, 1, a, b);
+    if (TrackBound)
+    {
+      ++this->Triangles;
+    }
+  }
+
+  /// COMPENSATED finish: double area vector, double normalisation.
+  PHONGVTK_INLINE bool Finish(AreaVector& out, bool mustSucceed) const
+  {
+    double w[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      w[c] = this->S[c] + this->Err[c];
+    }
+    return DoubleArith<T>::FinishVector(w, out, mustSucceed);
+  }
+
+  /**
+   * EXACT filter: true when every component is certified to carry a relative error below 2^-56
+   * (or is certified exactly zero), so that NormalizeFaithful returns a faithful normal.
+   */
+  PHONGVTK_INLINE bool FinishCertified(AreaVector& out) const
+  {
+    const double triangles = static_cast<double>(this->Triangles) + 1.0;
+    // Absolute slack for error terms lost to underflow (at most 2^-1074 per operation).
+    const double underflow = 32.0 * triangles * 0x1p-1074;
+    DD w[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      if (!(this->Permanent[c] <= 0x1p900)) // overflow risk or non-finite input
+      {
+        return false;
+      }
+      TwoSum(this->S[c], this->Err[c], w[c].Hi, w[c].Lo);
+      if (this->Permanent[c] == 0.0)
+      {
+        continue; // every product was exactly zero
+      }
+      const double bound = 64.0 * 0x1p-106 * this->Permanent[c] +
+        1.01 * triangles * 0x1p-53 * this->ErrMagnitude[c] + 0x1p-53 * std::fabs(this->Err[c]) +
+        underflow;
+      if (!(bound <= 0x1p-56 * std::fabs(w[c].Hi)))
+      {
+        return false;
+      }
+    }
+    int k;
+    double len;
+    if (!NormalizeFaithful(w, out.Normal, len, k))
+    {
+      out.SetZero(StatusDegenerate); // certified: every product was exactly zero
+      return true;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      out.Vector[c] = Scale2(w[c].Hi, -k) + Scale2(w[c].Lo, -k);
+    }
+    out.Length = len;
+    out.Exponent = k;
+    out.Status = StatusOk;
+    return true;
+  }
+};
+
+template <Accuracy A, class T>
+struct ArithFor;
+template <class T>
+struct ArithFor<Accuracy::Fast, T>
+{
+  using Type = FastArith<T>;
+};
+template <class T>
+struct ArithFor<Accuracy::Double, T>
+{
+  using Type = DoubleArith<T>;
+};
+template <class T>
+struct ArithFor<Accuracy::Compensated, T>
+{
+  using Type = CompensatedArith<T, false>;
+};
+template <class T>
+struct ArithFor<Accuracy::Exact, T>
+{
+  using Type = CompensatedArith<T, true>;
+};
+
+/**
+ * Scale of the slow path: the largest coordinate difference and whether differences overflow.
+ * Returns false when a coordinate is not finite.
+ */
+template <class T, class VertexFn>
+bool MeasureDifferences(const VertexFn& vertex, std::int64_t n, Scaling& scaling, double& largest)
+{
+  const T* p0 = vertex(0);
+  for (int c = 0; c < 3; ++c)
+  {
+    if (!std::isfinite(static_cast<double>(p0[c])))
+    {
+      return false;
+    }
+  }
+  double m = 0.0;
+  bool overflow = false;
+  for (std::int64_t i = 1; i < n; ++i)
+  {
+    const T* p = vertex(i);
+    for (int c = 0; c < 3; ++c)
+    {
+      const double x = static_cast<double>(p[c]);
+      if (!std::isfinite(x))
+      {
+        return false;
+      }
+      const double d = std::fabs(x - static_cast<double>(p0[c]));
+      overflow = overflow || std::isinf(d);
+      m = std::max(m, d);
+    }
+  }
+  scaling.Pre = overflow ? 0.25 : 1.0;
+  if (overflow)
+  {
+    m = 0.0;
+    for (std::int64_t i = 1; i < n; ++i)
+    {
+      const T* p = vertex(i);
+      for (int c = 0; c < 3; ++c)
+      {
+        m = std::max(
+          m, std::fabs(static_cast<double>(p[c]) * 0.25 - static_cast<double>(p0[c]) * 0.25));
+      }
+    }
+  }
+  scaling.Shift = m > 0.0 ? -std::ilogb(m) : 0;
+  largest = m;
+  return true;
+}
+
+/// Exact area vector in GMP integer arithmetic and its faithful normal
+/// (PhongVTKExactAreaVector.cxx).
+void ExactAreaVector(const double* xyz, std::int64_t n, AreaVector& out);
+
+template <class T, class VertexFn>
+void ExactFallback(const VertexFn& vertex, std::int64_t n, AreaVector& out)
+{
+  // Only polygons the double-double filter could not certify get here; gather them as doubles.
+  thread_local std::vector<double> xyz;
+  xyz.resize(static_cast<std::size_t>(3 * n));
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    const T* p = vertex(i);
+    for (int c = 0; c < 3; ++c)
+    {
+      xyz[3 * i + c] = static_cast<double>(p[c]);
+    }
+  }
+  ExactAreaVector(xyz.data(), n, out);
+}
+} // namespace detail
+
+/**
+ * Area vector, unit normal and status of one polygon with n vertices in accuracy mode A.
+ * `vertex(i)` returns a `const T*` to the coordinates of vertex i (i in [0, n)).
+ */
+template <Accuracy A, class T, class VertexFn>
+PHONGVTK_INLINE void ComputeAreaVector(const VertexFn& vertex, std::int64_t n, AreaVector& out)
+{
+  using Arith = typename detail::ArithFor<A, T>::Type;
+  if (n < 3)
+  {
+    out.SetZero(StatusDegenerate);
+    return;
+  }
+  const detail::Scaling identity;
+  {
+    Arith acc;
+    detail::AccumulateFan<false>(acc, vertex, n, identity);
+    if constexpr (A == Accuracy::Exact)
+    {
+      if (acc.FinishCertified(out))
+      {
+        return;
+      }
+    }
+    else if (acc.Finish(out, false))
+    {
+      return;
+    }
+  }
+  // Slow path: outside the safe exponent window, non-finite input, or (EXACT) not certified.
+  detail::Scaling scaling;
+  double largest;
+  if (!detail::MeasureDifferences<T>(vertex, n, scaling, largest))
+  {
+    out.SetZero(StatusNonFinite);
+    return;
+  }
+  if (largest == 0.0)
+  {
+    out.SetZero(StatusDegenerate);
+    return;
+  }
+  if constexpr (A == Accuracy::Exact)
+  {
+    detail::ExactFallback<T>(vertex, n, out);
+    return;
+  }
+  Arith acc;
+  detail::AccumulateFan<true>(acc, vertex, n, scaling);
+  acc.Finish(out, true);
+  if (out.Status == StatusOk)
+  {
+    // Undo the scaling of the differences: w scales with the square of the differences.
+    const int shift = -scaling.Shift + (scaling.Pre != 1.0 ? 2 : 0);
+    out.Exponent += 2 * shift;
+  }
+}
+
+/**
+ * The boundary of a triangle strip with k points, as a polygon: 0, 1, 3, 5, ... (odd indices
+ * ascending), then the even indices descending to 2. The sum of the strip's triangles, each with
+ * the strip's alternating orientation, equals the area vector of this outline exactly (the area
+ * vector is additive over a triangulation), so strips share the polygon kernel.
+ */
+inline std::int64_t StripOutlineIndex(std::int64_t i, std::int64_t k)
+{
+  const std::int64_t odd = k / 2;
+  if (i <= odd)
+  {
+    return i == 0 ? 0 : 2 * i - 1;
+  }
+  const std::int64_t even = (k - 1) / 2;
+  return 2 * (even - (i - odd - 1));
+}
+
+} // namespace phongvtk
+
+#endif
+// VTK-HeaderTest-Exclude: PhongVTKAreaVector.h

@@ -1,0 +1,166 @@
+// Exact fallback of the EXACT accuracy mode: the area vector in GMP integer arithmetic.
+//
+// Every finite double is m * 2^e with an integer m of at most 53 bits. Scaling the whole polygon
+// by 2^-emin (emin the smallest such e) turns every coordinate into an integer, so differences,
+// cross products and their sum are exact integers; the area vector is W * 2^(2 emin). Only the
+// polygons the double-double filter cannot certify come here (exact cancellation, coordinates
+// outside the safe exponent window), so clarity wins over speed.
+#include "PhongVTKAreaVector.h"
+
+#include <gmp.h>
+
+#include <array>
+#include <climits>
+#include <vector>
+
+namespace phongvtk
+{
+namespace detail
+{
+namespace
+{
+/// RAII holder of an mpz_t.
+class Integer
+{
+public:
+  Integer() { mpz_init(this->Value); }
+  ~Integer() { mpz_clear(this->Value); }
+  Integer(const Integer&) = delete;
+  Integer& operator=(const Integer&) = delete;
+  mpz_ptr get() { return this->Value; }
+  mpz_srcptr get() const { return this->Value; }
+
+private:
+  mpz_t Value;
+};
+
+/// x = c * 2^-emin exactly (c a finite double whose exponent is >= emin).
+void SetScaled(mpz_ptr x, double c, int emin)
+{
+  if (c == 0.0)
+  {
+    mpz_set_ui(x, 0);
+    return;
+  }
+  int e;
+  const double f = std::frexp(c, &e);                  // c = f * 2^e, 0.5 <= |f| < 1
+  const auto m = static_cast<long>(std::ldexp(f, 53)); // exact: 53-bit integer
+  mpz_set_si(x, m);
+  mpz_mul_2exp(x, x, static_cast<mp_bitcnt_t>(e - 53 - emin));
+}
+
+/// The integer z as a double-double hi + lo times 2^shift, with |hi + lo - z 2^-shift| tiny.
+DD ToScaledDD(mpz_srcptr z, long shift)
+{
+  if (mpz_sgn(z) == 0)
+  {
+    return { 0.0, 0.0 };
+  }
+  const long bits = static_cast<long>(mpz_sizeinbase(z, 2));
+  if (bits <= 53)
+  {
+    return { Scale2(mpz_get_d(z), static_cast<int>(-shift)), 0.0 };
+  }
+  // hi: the leading 53 bits (truncated); lo: the rest, rounded by mpz_get_d_2exp's truncation
+  // to 53 bits, so hi + lo carries ~106 correct bits.
+  Integer top, rest;
+  const auto drop = static_cast<mp_bitcnt_t>(bits - 53);
+  mpz_tdiv_q_2exp(top.get(), z, drop);
+  mpz_mul_2exp(rest.get(), top.get(), drop);
+  mpz_sub(rest.get(), z, rest.get());
+  const double hi = Scale2(mpz_get_d(top.get()), static_cast<int>(static_cast<long>(drop) - shift));
+  long e2 = 0;
+  double lo = 0.0;
+  if (mpz_sgn(rest.get()) != 0)
+  {
+    lo = mpz_get_d_2exp(&e2, rest.get());
+    lo = Scale2(lo, static_cast<int>(e2 - shift));
+  }
+  double s, t;
+  FastTwoSum(hi, lo, s, t);
+  return { s, t };
+}
+} // namespace
+
+void ExactAreaVector(const double* xyz, std::int64_t n, AreaVector& out)
+{
+  int emin = INT_MAX;
+  for (std::int64_t k = 0; k < 3 * n; ++k)
+  {
+    if (xyz[k] != 0.0)
+    {
+      int e;
+      std::frexp(xyz[k], &e);
+      emin = std::min(emin, e - 53);
+    }
+  }
+  if (emin == INT_MAX)
+  {
+    out.SetZero(StatusDegenerate); // every coordinate is zero
+    return;
+  }
+
+  std::array<Integer, 3> p0, prev, next, w;
+  for (int c = 0; c < 3; ++c)
+  {
+    SetScaled(p0[c].get(), xyz[c], emin);
+  }
+  auto difference = [&](std::int64_t i, std::array<Integer, 3>& d)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      SetScaled(d[c].get(), xyz[3 * i + c], emin);
+      mpz_sub(d[c].get(), d[c].get(), p0[c].get());
+    }
+  };
+  difference(1, prev);
+  for (std::int64_t i = 2; i < n; ++i)
+  {
+    difference(i, next);
+    for (int c = 0; c < 3; ++c)
+    {
+      const int a = (c + 1) % 3;
+      const int b = (c + 2) % 3;
+      mpz_addmul(w[c].get(), prev[a].get(), next[b].get());
+      mpz_submul(w[c].get(), prev[b].get(), next[a].get());
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      mpz_swap(prev[c].get(), next[c].get());
+    }
+  }
+
+  long bits = 0;
+  for (int c = 0; c < 3; ++c)
+  {
+    if (mpz_sgn(w[c].get()) != 0)
+    {
+      bits = std::max(bits, static_cast<long>(mpz_sizeinbase(w[c].get(), 2)));
+    }
+  }
+  if (bits == 0)
+  {
+    out.SetZero(StatusDegenerate); // the exact area vector is zero
+    return;
+  }
+  // W * 2^-bits has components below 1 in magnitude: no overflow, and underflow only for
+  // components below 2^-1022 of the largest one (they round to subnormal normal components).
+  DD v[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    v[c] = ToScaledDD(w[c].get(), bits);
+  }
+  int k;
+  double len;
+  NormalizeFaithful(v, out.Normal, len, k);
+  for (int c = 0; c < 3; ++c)
+  {
+    out.Vector[c] = Scale2(v[c].Hi, -k) + Scale2(v[c].Lo, -k);
+  }
+  out.Length = len;
+  out.Exponent = static_cast<int>(bits) + k + 2 * emin;
+  out.Status = StatusOk;
+}
+
+} // namespace detail
+} // namespace phongvtk

@@ -1,0 +1,760 @@
+#include "vtkPolygonNormals.h"
+
+#include "PhongVTKAreaVector.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+vtkStandardNewMacro(vtkPolygonNormals);
+
+namespace
+{
+using phongvtk::Accuracy;
+using phongvtk::AreaVector;
+
+/// Per-thread bookkeeping of a pass over the cells.
+struct CellCounts
+{
+  vtkIdType NonFinite = 0;
+  vtkIdType FirstBadCell = -1; // first cell with a point id outside [0, number of points)
+};
+
+/// Conversion to the output precision; magnitudes beyond its range saturate at its largest value.
+template <class O>
+inline O Saturate(double x)
+{
+  constexpr double top = static_cast<double>(std::numeric_limits<O>::max());
+  return static_cast<O>(std::max(-top, std::min(top, x)));
+}
+
+/**
+ * Where a pass over one of the input's cell arrays writes. Arrays the user did not ask for are
+ * null. `FaceData` receives, per cell, what the point normals need: the area vector scaled by
+ * 2^(-2 GlobalShift) for AREA weighting, the unit normal otherwise.
+ */
+template <class O>
+struct CellOutputs
+{
+  O* Normals = nullptr;
+  O* AreaVectors = nullptr;
+  O* Areas = nullptr;
+  unsigned char* Status = nullptr;
+  double* FaceData = nullptr;
+  bool FaceDataIsAreaVector = true;
+  int GlobalShift = 0;
+};
+
+template <class O>
+inline void WriteCell(const CellOutputs<O>& out, vtkIdType cell, const AreaVector& r)
+{
+  if (out.Normals)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      out.Normals[3 * cell + c] = static_cast<O>(r.Normal[c]);
+    }
+  }
+  if (out.AreaVectors)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      out.AreaVectors[3 * cell + c] = Saturate<O>(std::ldexp(r.Vector[c], r.Exponent - 1));
+    }
+  }
+  if (out.Areas)
+  {
+    out.Areas[cell] = Saturate<O>(std::ldexp(r.Length, r.Exponent - 1));
+  }
+  if (out.Status)
+  {
+    out.Status[cell] = r.Status;
+  }
+  if (out.FaceData)
+  {
+    double* f = out.FaceData + 3 * cell;
+    if (!out.FaceDataIsAreaVector)
+    {
+      std::copy(r.Normal, r.Normal + 3, f);
+    }
+    else if (r.Exponent == 2 * out.GlobalShift)
+    {
+      std::copy(r.Vector, r.Vector + 3, f);
+    }
+    else
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        f[c] = std::ldexp(r.Vector[c], r.Exponent - 2 * out.GlobalShift);
+      }
+    }
+  }
+}
+
+/**
+ * vtkSMPTools functor over a range of one cell array (polygons or strips): validates the point
+ * ids, evaluates the area vector kernel and writes the requested outputs.
+ */
+template <Accuracy A, class T, class O, class Offsets, class Connectivity>
+struct AreaVectorWorker
+{
+  const T* Points;
+  vtkIdType NumberOfPoints;
+  const Offsets* CellOffsets;
+  const Connectivity* CellConnectivity;
+  bool Strips;
+  vtkIdType FirstOutputCell;
+  CellOutputs<O> Out;
+  vtkSMPThreadLocal<CellCounts>* Counts;
+
+  void operator()(vtkIdType begin, vtkIdType end) const
+  {
+    using UnsignedId = std::make_unsigned_t<Connectivity>;
+    const auto numberOfPoints = static_cast<UnsignedId>(this->NumberOfPoints);
+    CellCounts& counts = this->Counts->Local();
+    const T* pts = this->Points;
+    for (vtkIdType cell = begin; cell < end; ++cell)
+    {
+      const Connectivity* ids = this->CellConnectivity + this->CellOffsets[cell];
+      const std::int64_t n = this->CellOffsets[cell + 1] - this->CellOffsets[cell];
+      const vtkIdType outCell = this->FirstOutputCell + cell;
+      bool valid = true;
+      for (std::int64_t k = 0; k < n; ++k)
+      {
+        valid &= static_cast<UnsignedId>(ids[k]) < numberOfPoints;
+      }
+      AreaVector r;
+      if (!valid)
+      {
+        if (counts.FirstBadCell < 0 || outCell < counts.FirstBadCell)
+        {
+          counts.FirstBadCell = outCell;
+        }
+        r.SetZero(phongvtk::StatusDegenerate);
+      }
+      else if (!this->Strips)
+      {
+        auto vertex = [pts, ids](std::int64_t i)
+        {
+          return pts + 3 * ids[i];
+        };
+        phongvtk::ComputeAreaVector<A, T>(vertex, n, r);
+      }
+      else
+      {
+        auto vertex = [pts, ids, n](std::int64_t i)
+        {
+          return pts + 3 * ids[phongvtk::StripOutlineIndex(i, n)];
+        };
+        phongvtk::ComputeAreaVector<A, T>(vertex, n, r);
+      }
+      counts.NonFinite += (r.Status == phongvtk::StatusNonFinite);
+      WriteCell(this->Out, outCell, r);
+    }
+  }
+};
+
+/// Largest finite coordinate magnitude: sets the common scale of the point normal sums.
+template <class T>
+double LargestFiniteCoordinate(const T* pts, vtkIdType n)
+{
+  vtkSMPThreadLocal<double> local(0.0);
+  vtkSMPTools::For(0, n,
+                   [&](vtkIdType begin, vtkIdType end)
+                   {
+                     double& m = local.Local();
+                     for (vtkIdType k = 3 * begin; k < 3 * end; ++k)
+                     {
+                       const double x = std::fabs(static_cast<double>(pts[k]));
+                       if (x <= std::numeric_limits<double>::max())
+                       {
+                         m = std::max(m, x);
+                       }
+                     }
+                   });
+  double m = 0.0;
+  for (double v : local)
+  {
+    m = std::max(m, v);
+  }
+  return m;
+}
+
+/**
+ * Adds one face's contribution to the point normal sums of its corners. `vertex(i)` gives the
+ * face's i-th point id; `face` is the face's FaceData entry (scaled area vector or unit normal).
+ */
+template <class T, class VertexIdFn>
+void ScatterFace(int weighting, const T* pts, int shift, const VertexIdFn& vertexId, std::int64_t n,
+                 const double face[3], double* sums)
+{
+  if (weighting == vtkPolygonNormals::AREA || weighting == vtkPolygonNormals::UNIFORM)
+  {
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      double* s = sums + 3 * vertexId(i);
+      s[0] += face[0];
+      s[1] += face[1];
+      s[2] += face[2];
+    }
+    return;
+  }
+  // ANGLE and MAX look at each corner: edges to the previous and next vertex, in coordinates
+  // scaled by 2^-shift so that squared lengths cannot overflow or underflow.
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    const T* v = pts + 3 * vertexId(i);
+    const T* next = pts + 3 * vertexId((i + 1) % n);
+    const T* prev = pts + 3 * vertexId((i + n - 1) % n);
+    double a[3], b[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      a[c] = std::ldexp(static_cast<double>(prev[c]) - static_cast<double>(v[c]), -shift);
+      b[c] = std::ldexp(static_cast<double>(next[c]) - static_cast<double>(v[c]), -shift);
+    }
+    const double x[3] = { b[1] * a[2] - b[2] * a[1], b[2] * a[0] - b[0] * a[2],
+                          b[0] * a[1] - b[1] * a[0] };
+    const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+    const double bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+    if (!(aa > 0.0 && bb > 0.0 && std::isfinite(aa) && std::isfinite(bb)))
+    {
+      continue; // a repeated vertex has no corner
+    }
+    double* s = sums + 3 * vertexId(i);
+    if (weighting == vtkPolygonNormals::ANGLE)
+    {
+      const double sine = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+      const double cosine = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+      const double angle = std::atan2(sine, cosine);
+      for (int c = 0; c < 3; ++c)
+      {
+        s[c] += angle * face[c];
+      }
+    }
+    else
+    {
+      const double inv = 1.0 / (aa * bb);
+      for (int c = 0; c < 3; ++c)
+      {
+        s[c] += x[c] * inv;
+      }
+    }
+  }
+}
+
+template <class O>
+void NormalizeSums(const std::vector<double>& sums, O* normals, vtkIdType n)
+{
+  vtkSMPTools::For(0, n,
+                   [&](vtkIdType begin, vtkIdType end)
+                   {
+                     for (vtkIdType p = begin; p < end; ++p)
+                     {
+                       double unit[3] = { 0.0, 0.0, 0.0 };
+                       double length;
+                       int k;
+                       const double* s = sums.data() + 3 * p;
+                       if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]))
+                       {
+                         phongvtk::detail::NormalizeDouble(s, unit, length, k);
+                       }
+                       for (int c = 0; c < 3; ++c)
+                       {
+                         normals[3 * p + c] = static_cast<O>(unit[c]);
+                       }
+                     }
+                   });
+}
+
+/// Visits the storage of a vtkCellArray with typed offsets and connectivity pointers.
+struct RawCells
+{
+  template <class CellStateT, class Fn>
+  void operator()(CellStateT& state, Fn&& fn) const
+  {
+    fn(state.GetOffsets()->GetPointer(0), state.GetConnectivity()->GetPointer(0));
+  }
+};
+
+/**
+ * The whole computation for one combination of point type T and output type O. Returns false
+ * when a cell refers to a point that does not exist (firstBadCell names it).
+ */
+template <class T, class O>
+class Computation
+{
+public:
+  vtkPolygonNormals* Filter;
+  vtkPolyData* Input;
+  const T* Points;
+  vtkIdType NumberOfPoints;
+  int AccuracyMode;
+  int Weighting;
+  bool PointNormals;
+  CellOutputs<O> Out;
+  vtkIdType NonFinite = 0;
+  vtkIdType FirstBadCell = -1;
+  std::vector<double> FaceData;
+
+  bool Run(O* pointNormals)
+  {
+    vtkPolyData* input = this->Input;
+    const vtkIdType numVerts = input->GetNumberOfVerts();
+    const vtkIdType numLines = input->GetNumberOfLines();
+    const vtkIdType numPolys = input->GetNumberOfPolys();
+    const vtkIdType numStrips = input->GetNumberOfStrips();
+    const vtkIdType numCells = numVerts + numLines + numPolys + numStrips;
+
+    if (this->PointNormals)
+    {
+      const double m = LargestFiniteCoordinate(this->Points, this->NumberOfPoints);
+      this->Out.GlobalShift = (m >= 0x1p-200 && m <= 0x1p200) || m == 0.0 ? 0 : std::ilogb(m);
+      this->FaceData.assign(static_cast<std::size_t>(3 * numCells), 0.0);
+      this->Out.FaceData = this->FaceData.data();
+      this->Out.FaceDataIsAreaVector = this->Weighting == vtkPolygonNormals::AREA;
+    }
+
+    // Vertices and lines are not surfaces; their point ids are checked all the same, since the
+    // output passes them through.
+    AreaVector notSurface;
+    notSurface.SetZero(phongvtk::StatusNotSurface);
+    vtkSMPThreadLocal<CellCounts> counts;
+    vtkCellArray* curves[2] = { input->GetVerts(), input->GetLines() };
+    vtkIdType first = 0;
+    for (vtkCellArray* cells : curves)
+    {
+      const vtkIdType n = cells ? cells->GetNumberOfCells() : 0;
+      if (n > 0)
+      {
+        cells->Visit(
+          RawCells{},
+          [&](const auto* offsets, const auto* conn)
+          {
+            using Id =
+              std::make_unsigned_t<std::remove_cv_t<std::remove_pointer_t<decltype(conn)>>>;
+            vtkSMPTools::For(
+              0, n,
+              [&](vtkIdType begin, vtkIdType end)
+              {
+                CellCounts& local = counts.Local();
+                for (vtkIdType cell = begin; cell < end; ++cell)
+                {
+                  for (auto k = offsets[cell]; k < offsets[cell + 1]; ++k)
+                  {
+                    if (static_cast<Id>(conn[k]) >= static_cast<Id>(this->NumberOfPoints) &&
+                        (local.FirstBadCell < 0 || first + cell < local.FirstBadCell))
+                    {
+                      local.FirstBadCell = first + cell;
+                    }
+                  }
+                  WriteCell(this->Out, first + cell, notSurface);
+                }
+              });
+          });
+      }
+      first += n;
+    }
+
+    this->RunSurfaces(input->GetPolys(), numVerts + numLines, false, counts, numCells);
+    this->RunSurfaces(input->GetStrips(), numVerts + numLines + numPolys, true, counts, numCells);
+    for (const CellCounts& c : counts)
+    {
+      this->NonFinite += c.NonFinite;
+      if (c.FirstBadCell >= 0 && (this->FirstBadCell < 0 || c.FirstBadCell < this->FirstBadCell))
+      {
+        this->FirstBadCell = c.FirstBadCell;
+      }
+    }
+    if (this->FirstBadCell >= 0)
+    {
+      return false;
+    }
+    if (this->PointNormals && !this->Filter->GetAbortExecute())
+    {
+      this->ComputePointNormals(numVerts + numLines, numPolys, pointNormals);
+    }
+    return true;
+  }
+
+private:
+  /// Polygons or strips, in blocks so that progress is reported and abort honoured.
+  void RunSurfaces(vtkCellArray* cells, vtkIdType firstCell, bool strips,
+                   vtkSMPThreadLocal<CellCounts>& counts, vtkIdType numCells)
+  {
+    const vtkIdType n = cells ? cells->GetNumberOfCells() : 0;
+    if (n == 0)
+    {
+      return;
+    }
+    cells->Visit(RawCells{},
+                 [&](const auto* offsets, const auto* conn)
+                 {
+                   using Off = std::remove_cv_t<std::remove_pointer_t<decltype(offsets)>>;
+                   using Conn = std::remove_cv_t<std::remove_pointer_t<decltype(conn)>>;
+                   switch (this->AccuracyMode)
+                   {
+                     case vtkPolygonNormals::FAST:
+                       this->RunBlocks<Accuracy::Fast, Off, Conn>(offsets, conn, n, firstCell,
+                                                                  strips, counts, numCells);
+                       break;
+                     case vtkPolygonNormals::COMPENSATED:
+                       this->RunBlocks<Accuracy::Compensated, Off, Conn>(
+                         offsets, conn, n, firstCell, strips, counts, numCells);
+                       break;
+                     case vtkPolygonNormals::EXACT:
+                       this->RunBlocks<Accuracy::Exact, Off, Conn>(offsets, conn, n, firstCell,
+                                                                   strips, counts, numCells);
+                       break;
+                     default:
+                       this->RunBlocks<Accuracy::Double, Off, Conn>(offsets, conn, n, firstCell,
+                                                                    strips, counts, numCells);
+                       break;
+                   }
+                 });
+  }
+
+  template <Accuracy A, class Off, class Conn>
+  void RunBlocks(const Off* offsets, const Conn* conn, vtkIdType n, vtkIdType firstCell,
+                 bool strips, vtkSMPThreadLocal<CellCounts>& counts, vtkIdType numCells)
+  {
+    AreaVectorWorker<A, T, O, Off, Conn> worker{
+      this->Points, this->NumberOfPoints, offsets, conn, strips, firstCell, this->Out, &counts
+    };
+    const vtkIdType block = std::max<vtkIdType>(65536, (n + 9) / 10);
+    for (vtkIdType begin = 0; begin < n && !this->Filter->GetAbortExecute(); begin += block)
+    {
+      const vtkIdType end = std::min(n, begin + block);
+      vtkSMPTools::For(begin, end, worker);
+      const double share = this->PointNormals ? 0.8 : 1.0;
+      this->Filter->UpdateProgress(share * static_cast<double>(firstCell + end) /
+                                   static_cast<double>(numCells));
+    }
+  }
+
+  /// Serial scatter of the face contributions (bitwise identical for any thread count), then
+  /// parallel normalisation.
+  void ComputePointNormals(vtkIdType firstPoly, vtkIdType numPolys, O* pointNormals)
+  {
+    std::vector<double> sums(static_cast<std::size_t>(3 * this->NumberOfPoints), 0.0);
+    const int weighting = this->Weighting;
+    const int shift = this->Out.GlobalShift;
+    const T* pts = this->Points;
+    vtkCellArray* polys = this->Input->GetPolys();
+    if (numPolys > 0)
+    {
+      polys->Visit(RawCells{},
+                   [&](const auto* offsets, const auto* conn)
+                   {
+                     for (vtkIdType cell = 0; cell < numPolys; ++cell)
+                     {
+                       const double* face = this->FaceData.data() + 3 * (firstPoly + cell);
+                       if (face[0] == 0.0 && face[1] == 0.0 && face[2] == 0.0)
+                       {
+                         continue; // degenerate or flagged: no direction to contribute
+                       }
+                       const auto* ids = conn + offsets[cell];
+                       ScatterFace(
+                         weighting, pts, shift,
+                         [ids](std::int64_t i) { return static_cast<vtkIdType>(ids[i]); },
+                         offsets[cell + 1] - offsets[cell], face, sums.data());
+                     }
+                   });
+    }
+    this->Filter->UpdateProgress(0.9);
+    vtkCellArray* strips = this->Input->GetStrips();
+    if (strips && strips->GetNumberOfCells() > 0)
+    {
+      this->ScatterStrips(strips, sums);
+    }
+    NormalizeSums(sums, pointNormals, this->NumberOfPoints);
+  }
+
+  /// A strip contributes triangle by triangle, each with the strip's alternating orientation.
+  void ScatterStrips(vtkCellArray* strips, std::vector<double>& sums)
+  {
+    const T* pts = this->Points;
+    const int shift = this->Out.GlobalShift;
+    strips->Visit(RawCells{},
+                  [&](const auto* offsets, const auto* conn)
+                  {
+                    for (vtkIdType cell = 0; cell < strips->GetNumberOfCells(); ++cell)
+                    {
+                      const auto* ids = conn + offsets[cell];
+                      const std::int64_t n = offsets[cell + 1] - offsets[cell];
+                      for (std::int64_t j = 0; j + 2 < n; ++j)
+                      {
+                        const vtkIdType tri[3] = { static_cast<vtkIdType>(ids[j + (j & 1)]),
+                                                   static_cast<vtkIdType>(ids[j + 1 - (j & 1)]),
+                                                   static_cast<vtkIdType>(ids[j + 2]) };
+                        auto vertex = [pts, &tri](std::int64_t i)
+                        {
+                          return pts + 3 * tri[i];
+                        };
+                        AreaVector r;
+                        switch (this->AccuracyMode)
+                        {
+                          case vtkPolygonNormals::FAST:
+                            phongvtk::ComputeAreaVector<Accuracy::Fast, T>(vertex, 3, r);
+                            break;
+                          case vtkPolygonNormals::COMPENSATED:
+                            phongvtk::ComputeAreaVector<Accuracy::Compensated, T>(vertex, 3, r);
+                            break;
+                          case vtkPolygonNormals::EXACT:
+                            phongvtk::ComputeAreaVector<Accuracy::Exact, T>(vertex, 3, r);
+                            break;
+                          default:
+                            phongvtk::ComputeAreaVector<Accuracy::Double, T>(vertex, 3, r);
+                            break;
+                        }
+                        if (r.Status != phongvtk::StatusOk)
+                        {
+                          continue;
+                        }
+                        double face[3];
+                        for (int c = 0; c < 3; ++c)
+                        {
+                          face[c] = this->Weighting == vtkPolygonNormals::AREA
+                            ? std::ldexp(r.Vector[c], r.Exponent - 2 * shift)
+                            : r.Normal[c];
+                        }
+                        ScatterFace(
+                          this->Weighting, pts, shift, [&tri](std::int64_t i) { return tri[i]; }, 3,
+                          face, sums.data());
+                      }
+                    }
+                  });
+  }
+};
+
+template <class O>
+vtkSmartPointer<vtkDataArray> NewArray(const char* name, int components, vtkIdType tuples)
+{
+  using ArrayT = std::conditional_t<std::is_same<O, float>::value, vtkFloatArray, vtkDoubleArray>;
+  auto array = vtkSmartPointer<ArrayT>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+
+template <class O>
+O* Pointer(vtkDataArray* array)
+{
+  return array ? static_cast<O*>(array->GetVoidPointer(0)) : nullptr;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkPolygonNormals::vtkPolygonNormals() = default;
+vtkPolygonNormals::~vtkPolygonNormals() = default;
+
+//------------------------------------------------------------------------------
+const char* vtkPolygonNormals::GetAccuracyAsString()
+{
+  switch (this->Accuracy)
+  {
+    case FAST:
+      return "FAST";
+    case COMPENSATED:
+      return "COMPENSATED";
+    case EXACT:
+      return "EXACT";
+    default:
+      return "DOUBLE";
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkPolygonNormals::GetPointWeightingAsString()
+{
+  switch (this->PointWeighting)
+  {
+    case ANGLE:
+      return "ANGLE";
+    case UNIFORM:
+      return "UNIFORM";
+    case MAX:
+      return "MAX";
+    default:
+      return "AREA";
+  }
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+template <class T, class O>
+bool Dispatch(vtkPolygonNormals* self, vtkPolyData* input, vtkPolyData* output, const T* points,
+              vtkIdType& nonFinite, vtkIdType& firstBadCell)
+{
+  const vtkIdType numCells = input->GetNumberOfCells();
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  Computation<T, O> run;
+  run.Filter = self;
+  run.Input = input;
+  run.Points = points;
+  run.NumberOfPoints = numPoints;
+  run.AccuracyMode = self->GetAccuracy();
+  run.Weighting = self->GetPointWeighting();
+  run.PointNormals = self->GetComputePointNormals();
+
+  vtkSmartPointer<vtkDataArray> normals, areaVectors, areas, pointNormals;
+  vtkSmartPointer<vtkUnsignedCharArray> status;
+  if (self->GetComputeCellNormals())
+  {
+    normals = NewArray<O>("Normals", 3, numCells);
+  }
+  if (self->GetComputeAreaVectors())
+  {
+    areaVectors = NewArray<O>("AreaVectors", 3, numCells);
+  }
+  if (self->GetComputeAreas())
+  {
+    areas = NewArray<O>("Areas", 1, numCells);
+  }
+  if (self->GetComputeNormalStatus())
+  {
+    status = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    status->SetName("NormalStatus");
+    status->SetNumberOfTuples(numCells);
+  }
+  if (run.PointNormals)
+  {
+    pointNormals = NewArray<O>("Normals", 3, numPoints);
+  }
+  run.Out.Normals = Pointer<O>(normals);
+  run.Out.AreaVectors = Pointer<O>(areaVectors);
+  run.Out.Areas = Pointer<O>(areas);
+  run.Out.Status = status ? status->GetPointer(0) : nullptr;
+
+  const bool ok = run.Run(Pointer<O>(pointNormals));
+  nonFinite = run.NonFinite;
+  firstBadCell = run.FirstBadCell;
+  if (!ok)
+  {
+    return false;
+  }
+  vtkCellData* cd = output->GetCellData();
+  if (normals)
+  {
+    cd->SetNormals(normals);
+  }
+  if (areaVectors)
+  {
+    cd->AddArray(areaVectors);
+  }
+  if (areas)
+  {
+    cd->AddArray(areas);
+  }
+  if (status)
+  {
+    cd->AddArray(status);
+  }
+  if (pointNormals)
+  {
+    output->GetPointData()->SetNormals(pointNormals);
+  }
+  return true;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
+                                   vtkInformationVector** inputVector,
+                                   vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  output->ShallowCopy(input);
+  vtkPoints* points = input->GetPoints();
+  if (!points || input->GetNumberOfCells() == 0)
+  {
+    if (input->GetNumberOfCells() > 0)
+    {
+      vtkErrorMacro("Input has " << input->GetNumberOfCells() << " cells but no points.");
+      output->Initialize();
+    }
+    return 1;
+  }
+
+  // The kernels read float or double coordinates in place; any other type is converted once.
+  vtkDataArray* data = points->GetData();
+  vtkSmartPointer<vtkDoubleArray> converted;
+  const int pointType = data->GetDataType();
+  if (pointType != VTK_FLOAT && pointType != VTK_DOUBLE)
+  {
+    converted = vtkSmartPointer<vtkDoubleArray>::New();
+    converted->DeepCopy(data);
+    data = converted;
+  }
+  const bool doubleOutput = this->OutputPrecision == DOUBLE_PRECISION ||
+    (this->OutputPrecision == DEFAULT_PRECISION && pointType == VTK_DOUBLE);
+
+  vtkIdType nonFinite = 0;
+  vtkIdType firstBadCell = -1;
+  bool ok;
+  void* raw = data->GetVoidPointer(0);
+  if (data->GetDataType() == VTK_FLOAT)
+  {
+    const auto* p = static_cast<const float*>(raw);
+    ok = doubleOutput ? Dispatch<float, double>(this, input, output, p, nonFinite, firstBadCell)
+                      : Dispatch<float, float>(this, input, output, p, nonFinite, firstBadCell);
+  }
+  else
+  {
+    const auto* p = static_cast<const double*>(raw);
+    ok = doubleOutput ? Dispatch<double, double>(this, input, output, p, nonFinite, firstBadCell)
+                      : Dispatch<double, float>(this, input, output, p, nonFinite, firstBadCell);
+  }
+  if (!ok)
+  {
+    vtkErrorMacro("Cell " << firstBadCell << " refers to a point id outside [0, "
+                          << input->GetNumberOfPoints() << "); the output is empty.");
+    output->Initialize();
+    return 1;
+  }
+  if (nonFinite > 0)
+  {
+    vtkWarningMacro(<< nonFinite
+                    << " cell(s) have non-finite (NaN or Inf) point coordinates; they are flagged "
+                       "with NormalStatus 2 and get a zero normal.");
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkPolygonNormals::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Accuracy: " << this->GetAccuracyAsString() << "\n";
+  os << indent << "PointWeighting: " << this->GetPointWeightingAsString() << "\n";
+  os << indent << "ComputeCellNormals: " << (this->ComputeCellNormals ? "On" : "Off") << "\n";
+  os << indent << "ComputePointNormals: " << (this->ComputePointNormals ? "On" : "Off") << "\n";
+  os << indent << "ComputeAreaVectors: " << (this->ComputeAreaVectors ? "On" : "Off") << "\n";
+  os << indent << "ComputeAreas: " << (this->ComputeAreas ? "On" : "Off") << "\n";
+  os << indent << "ComputeNormalStatus: " << (this->ComputeNormalStatus ? "On" : "Off") << "\n";
+  os << indent << "OutputPrecision: " << this->OutputPrecision << "\n";
+}

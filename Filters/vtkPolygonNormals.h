@@ -1,0 +1,175 @@
+/**
+ * @class   vtkPolygonNormals
+ * @brief   cell and point normals by the summed cross-product rule, in a ladder of accuracy modes
+ *
+ * For every polygon p0 ... p(n-1) vtkPolygonNormals computes the area vector
+ * `w = sum_{i=1}^{n-2} (p_i - p0) x (p_(i+1) - p0)`: `|w|` is twice the area and `w/|w|` the unit
+ * normal, for any number of vertices, concave, non-planar or self-intersecting polygons alike.
+ * A triangle strip's area vector is the sum of its triangles taken with the strip's alternating
+ * orientation. Vertices and lines are not surfaces.
+ *
+ * Cell outputs: `Normals` (unit normals, set as the active cell normals) and, on request,
+ * `AreaVectors` (w/2: its length is the area), `Areas` and `NormalStatus` (0 ok, 1 degenerate:
+ * zero area, 2 non-finite input coordinates, 3 not a surface cell). A degenerate, non-finite or
+ * non-surface cell gets the zero vector: never a NaN and never an invented direction.
+ *
+ * Point outputs (on request): `Normals` from the faces around each point, weighted by
+ * PointWeighting: AREA (the sum of the faces' area vectors, i.e. the same rule applied to the
+ * vertex star), ANGLE (Thuermer-Wuethrich: unit face normal times the corner angle), UNIFORM
+ * (the sum of unit face normals, as vtkPolyDataNormals does) or MAX (Nelson Max 1999: corner
+ * cross product divided by the squared lengths of the corner's edges).
+ *
+ * Accuracy (error bounds with u = 2^-53, measured numbers in the README):
+ * - FAST: float32 arithmetic (differences of nearby points in the points' precision).
+ * - DOUBLE (default): double arithmetic, fan from p0, as VTK computes polygon normals.
+ * - COMPENSATED: error-free transformations (TwoDiff, FMA TwoProduct, compensated sums): a few
+ *   ulp per component unless the component is cancelled below u times its condition.
+ * - EXACT: every component of the unit normal within 1 ulp of the exact value (faithful), and
+ *   the normal is zero exactly when the exact area vector is zero. A double-double evaluation
+ *   with a certified error bound decides almost every polygon; exact GMP integer arithmetic
+ *   decides the rest.
+ * No mode overflows or underflows for finite input; non-finite coordinates flag the cell
+ * (status 2, zero normal) and raise one warning with their count. Point ids outside the point
+ * range are an error naming the first bad cell, and the output is empty.
+ *
+ * Everything the filter does not compute passes through: points, all cells, every other point,
+ * cell and field array. Work is split with vtkSMPTools and the output is bitwise identical for
+ * every thread count and SMP backend.
+ *
+ * @sa vtkPolyDataNormals vtkTriangleMeshPointNormals vtkPolygon
+ */
+#ifndef vtkPolygonNormals_h
+#define vtkPolygonNormals_h
+
+#include "vtkPhongVTKFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class VTKPHONGVTKFILTERS_EXPORT vtkPolygonNormals : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkPolygonNormals* New();
+  vtkTypeMacro(vtkPolygonNormals, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Accuracy modes, fastest first.
+  enum AccuracyModes
+  {
+    FAST = 0,
+    DOUBLE = 1,
+    COMPENSATED = 2,
+    EXACT = 3
+  };
+
+  /// Weightings of the face normals around a point.
+  enum PointWeightingModes
+  {
+    AREA = 0,
+    ANGLE = 1,
+    UNIFORM = 2,
+    MAX = 3
+  };
+
+  ///@{
+  /**
+   * Arithmetic of the area vectors: FAST, DOUBLE, COMPENSATED or EXACT. Default is DOUBLE.
+   */
+  vtkSetClampMacro(Accuracy, int, FAST, EXACT);
+  vtkGetMacro(Accuracy, int);
+  void SetAccuracyToFast() { this->SetAccuracy(FAST); }
+  void SetAccuracyToDouble() { this->SetAccuracy(DOUBLE); }
+  void SetAccuracyToCompensated() { this->SetAccuracy(COMPENSATED); }
+  void SetAccuracyToExact() { this->SetAccuracy(EXACT); }
+  const char* GetAccuracyAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Weighting of the face normals around a point: AREA, ANGLE, UNIFORM or MAX. Default is AREA.
+   */
+  vtkSetClampMacro(PointWeighting, int, AREA, MAX);
+  vtkGetMacro(PointWeighting, int);
+  void SetPointWeightingToArea() { this->SetPointWeighting(AREA); }
+  void SetPointWeightingToAngle() { this->SetPointWeighting(ANGLE); }
+  void SetPointWeightingToUniform() { this->SetPointWeighting(UNIFORM); }
+  void SetPointWeightingToMax() { this->SetPointWeighting(MAX); }
+  const char* GetPointWeightingAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Produce the cell array `Normals` (unit normals, the active cell normals). Default is on.
+   */
+  vtkSetMacro(ComputeCellNormals, bool);
+  vtkGetMacro(ComputeCellNormals, bool);
+  vtkBooleanMacro(ComputeCellNormals, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Produce the point array `Normals` (the active point normals). Default is off.
+   */
+  vtkSetMacro(ComputePointNormals, bool);
+  vtkGetMacro(ComputePointNormals, bool);
+  vtkBooleanMacro(ComputePointNormals, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Produce the cell array `AreaVectors` (w/2: its length is the area). Default is off.
+   * Values beyond the range of the output precision saturate at its largest finite value.
+   */
+  vtkSetMacro(ComputeAreaVectors, bool);
+  vtkGetMacro(ComputeAreaVectors, bool);
+  vtkBooleanMacro(ComputeAreaVectors, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Produce the cell array `Areas`. Default is off. Saturates like AreaVectors.
+   */
+  vtkSetMacro(ComputeAreas, bool);
+  vtkGetMacro(ComputeAreas, bool);
+  vtkBooleanMacro(ComputeAreas, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Produce the uint8 cell array `NormalStatus`: 0 ok, 1 degenerate (zero area), 2 non-finite
+   * input, 3 not a surface cell. Default is off.
+   */
+  vtkSetMacro(ComputeNormalStatus, bool);
+  vtkGetMacro(ComputeNormalStatus, bool);
+  vtkBooleanMacro(ComputeNormalStatus, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Precision of the output arrays: vtkAlgorithm::SINGLE_PRECISION (default, VTK's convention
+   * for normals), DOUBLE_PRECISION, or DEFAULT_PRECISION (that of the input points).
+   */
+  vtkSetClampMacro(OutputPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  vtkGetMacro(OutputPrecision, int);
+  ///@}
+
+protected:
+  vtkPolygonNormals();
+  ~vtkPolygonNormals() override;
+
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+                  vtkInformationVector* outputVector) override;
+
+  int Accuracy = DOUBLE;
+  int PointWeighting = AREA;
+  bool ComputeCellNormals = true;
+  bool ComputePointNormals = false;
+  bool ComputeAreaVectors = false;
+  bool ComputeAreas = false;
+  bool ComputeNormalStatus = false;
+  int OutputPrecision = SINGLE_PRECISION;
+
+private:
+  vtkPolygonNormals(const vtkPolygonNormals&) = delete;
+  void operator=(const vtkPolygonNormals&) = delete;
+};
+
+#endif
