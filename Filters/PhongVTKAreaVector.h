@@ -29,8 +29,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
 
 namespace phongvtk
 {
@@ -135,15 +140,87 @@ PHONGVTK_INLINE DD Add(DD a, DD b)
   return { s, e };
 }
 
+/// Three coordinates (x, y, z, 0) in one SIMD register (GCC/Clang vector extension).
+typedef double V4 __attribute__((vector_size(32)));
+typedef long long V4i __attribute__((vector_size(32)));
+
+template <class T>
+PHONGVTK_INLINE V4 Load(const T* p)
+{
+  return V4{ static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2]), 0.0 };
+}
+
+PHONGVTK_INLINE V4 RotateYZX(V4 v)
+{
+  return __builtin_shuffle(v, V4i{ 1, 2, 0, 3 });
+}
+
+PHONGVTK_INLINE V4 RotateZXY(V4 v)
+{
+  return __builtin_shuffle(v, V4i{ 2, 0, 1, 3 });
+}
+
+PHONGVTK_INLINE V4 Abs(V4 v)
+{
+  constexpr long long magnitude = 0x7fffffffffffffffLL; // clears the sign bit
+  return reinterpret_cast<V4>(reinterpret_cast<V4i>(v) & magnitude);
+}
+
+PHONGVTK_INLINE V4 Fma(V4 a, V4 b, V4 c)
+{
+#if defined(__FMA__) && defined(__AVX__)
+  return reinterpret_cast<V4>(_mm256_fmadd_pd(
+    reinterpret_cast<__m256d>(a), reinterpret_cast<__m256d>(b), reinterpret_cast<__m256d>(c)));
+#else
+  return V4{ Fma(a[0], b[0], c[0]), Fma(a[1], b[1], c[1]), Fma(a[2], b[2], c[2]),
+             Fma(a[3], b[3], c[3]) };
+#endif
+}
+
+PHONGVTK_INLINE void TwoSum(V4 a, V4 b, V4& s, V4& e)
+{
+  s = a + b;
+  const V4 bb = s - a;
+  e = (a - (s - bb)) + (b - bb);
+}
+
+PHONGVTK_INLINE void TwoProduct(V4 a, V4 b, V4& p, V4& e)
+{
+  p = a * b;
+  e = Fma(a, b, -p);
+}
+
 PHONGVTK_INLINE double MaxAbs3(const double v[3])
 {
   return std::max(std::fabs(v[0]), std::max(std::fabs(v[1]), std::fabs(v[2])));
 }
 
-/// Exact power-of-two scaling by 2^k (std::ldexp is exact unless the result leaves the range).
+/// 2^k for k in [-1022, 1023], built from its bits (std::ldexp is a slow library call).
+PHONGVTK_INLINE double Pow2(int k)
+{
+  const std::uint64_t bits = static_cast<std::uint64_t>(k + 1023) << 52;
+  double x;
+  std::memcpy(&x, &bits, sizeof(x));
+  return x;
+}
+
+/// x * 2^k, exact unless the result leaves the normal range (then rounded once, like ldexp).
 PHONGVTK_INLINE double Scale2(double x, int k)
 {
+  if (k >= -1022 && k <= 1023)
+  {
+    return x * Pow2(k);
+  }
   return std::ldexp(x, k);
+}
+
+/// floor(log2|m|) for finite non-zero m.
+PHONGVTK_INLINE int Exponent2(double m)
+{
+  std::uint64_t bits;
+  std::memcpy(&bits, &m, sizeof(bits));
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  return biased != 0 ? biased - 1023 : std::ilogb(m);
 }
 
 /**
@@ -162,7 +239,7 @@ inline bool NormalizeDouble(const double w[3], double n[3], double& length, int&
     {
       return false;
     }
-    const int k = std::ilogb(m);
+    const int k = Exponent2(m);
     for (int c = 0; c < 3; ++c)
     {
       v[c] = Scale2(v[c], -k);
@@ -191,31 +268,41 @@ inline bool NormalizeFaithful(const DD w[3], double n[3], double& length, int& e
   {
     return false;
   }
-  const int k = std::ilogb(m);
+  // Squares of components in [2^-500, 2^500] neither overflow nor lose the low parts to
+  // underflow; outside that window the vector is first scaled by an exact power of two.
+  const int k = (m >= 0x1p-500 && m <= 0x1p500) ? 0 : Exponent2(m);
   DD v[3];
   for (int c = 0; c < 3; ++c)
   {
-    v[c] = { Scale2(w[c].Hi, -k), Scale2(w[c].Lo, -k) };
+    v[c] = k == 0 ? w[c] : DD{ Scale2(w[c].Hi, -k), Scale2(w[c].Lo, -k) };
   }
-  DD s = { 0.0, 0.0 };
+  // |v|^2 in double-double: the three leading squares are summed exactly (TwoSum); the error
+  // terms (square errors, cross terms 2 hi lo, sum errors) are O(u |v|^2) and summed in double.
+  double p[3], e[3];
   for (int c = 0; c < 3; ++c)
   {
-    double p, e;
-    TwoProduct(v[c].Hi, v[c].Hi, p, e);
-    e += 2.0 * v[c].Hi * v[c].Lo;
-    s = Add(s, { p, e });
+    TwoProduct(v[c].Hi, v[c].Hi, p[c], e[c]);
+    e[c] += 2.0 * v[c].Hi * v[c].Lo;
   }
-  // sqrt in double-double: one Newton correction of the double square root.
+  double s1, t1, s2, t2;
+  TwoSum(p[0], p[1], s1, t1);
+  TwoSum(s1, p[2], s2, t2);
+  DD s;
+  FastTwoSum(s2, (t1 + t2) + (e[0] + e[1] + e[2]), s.Hi, s.Lo);
+  // sqrt in double-double: one Newton correction of the double square root. One reciprocal
+  // serves every quotient: q1 = v.Hi / norm is only a first approximation, the remainder
+  // v - q1 * norm is evaluated (nearly) exactly, so the correction rem / norm needs only a few
+  // correct bits and the reciprocal's rounding error vanishes at second order.
   const double r = std::sqrt(s.Hi);
+  const double inverse = 1.0 / r;
   const double residual = Fma(-r, r, s.Hi) + s.Lo;
   DD norm;
-  FastTwoSum(r, residual / (2.0 * r), norm.Hi, norm.Lo);
+  FastTwoSum(r, 0.5 * residual * inverse, norm.Hi, norm.Lo);
   for (int c = 0; c < 3; ++c)
   {
-    const double q1 = v[c].Hi / norm.Hi;
-    // remainder of (v.Hi + v.Lo) - q1 * (norm.Hi + norm.Lo), the first product exactly.
+    const double q1 = v[c].Hi * inverse;
     const double rem = Fma(-q1, norm.Hi, v[c].Hi) + (v[c].Lo - q1 * norm.Lo);
-    n[c] = q1 + rem / norm.Hi;
+    n[c] = q1 + rem * inverse;
   }
   length = norm.Hi;
   exponent = k;
@@ -422,79 +509,70 @@ struct DoubleArith
 template <class T, bool TrackBound>
 struct CompensatedArith
 {
+  /// A difference p - p0 as the exact double-double Hi + Lo, with the lane rotations the cross
+  /// product needs (yzx, zxy), computed once per vertex.
   struct Diff
   {
-    double Hi[3];
-    double Lo[3];
+    V4 Hi, Lo, HiYZX, HiZXY, LoYZX, LoZXY;
   };
-  double S[3] = { 0.0, 0.0, 0.0 };            // leading sum
-  double Err[3] = { 0.0, 0.0, 0.0 };          // every error term of the leading sum and products
-  double Permanent[3] = { 0.0, 0.0, 0.0 };    // P_c, sum of |products| (only with TrackBound)
-  double ErrMagnitude[3] = { 0.0, 0.0, 0.0 }; // M_c (only with TrackBound)
-  std::int64_t Triangles = 0;
+  V4 S = {};            // leading sum
+  V4 Err = {};          // every error term of the leading sum and of the products
+  V4 Permanent = {};    // P_c, sum of |products| (only with TrackBound)
+  V4 ErrMagnitude = {}; // M_c, sum of |terms added to Err| (only with TrackBound)
 
   template <bool Scaled>
   static PHONGVTK_INLINE Diff Difference(const T* p, const T* p0, const Scaling& s)
   {
-    Diff d;
-    for (int c = 0; c < 3; ++c)
+    V4 a = Load(p);
+    V4 b = Load(p0);
+    if (Scaled)
     {
-      if (Scaled)
+      a *= s.Pre;
+      b *= s.Pre;
+    }
+    Diff d;
+    TwoSum(a, -b, d.Hi, d.Lo);
+    if (Scaled)
+    {
+      for (int c = 0; c < 3; ++c)
       {
-        TwoSum(static_cast<double>(p[c]) * s.Pre, -(static_cast<double>(p0[c]) * s.Pre), d.Hi[c],
-               d.Lo[c]);
         d.Hi[c] = Scale2(d.Hi[c], s.Shift);
         d.Lo[c] = Scale2(d.Lo[c], s.Shift);
       }
-      else
-      {
-        TwoSum(static_cast<double>(p[c]), -static_cast<double>(p0[c]), d.Hi[c], d.Lo[c]);
-      }
     }
+    d.HiYZX = RotateYZX(d.Hi);
+    d.HiZXY = RotateZXY(d.Hi);
+    d.LoYZX = RotateYZX(d.Lo);
+    d.LoZXY = RotateZXY(d.Lo);
     return d;
-  }
-
-  PHONGVTK_INLINE void AddComponent(int c, int i, int j, const Diff& a, const Diff& b)
-  {
-    // a_i b_j - a_j b_i with a = ah + al, b = bh + bl; al * bl is second order and dropped.
-    double p1, e1, p2, e2;
-    TwoProduct(a.Hi[i], b.Hi[j], p1, e1);
-    TwoProduct(a.Hi[j], b.Hi[i], p2, e2);
-    double s, e;
-    TwoSum(p1, -p2, s, e);
-    double t, f;
-    TwoSum(this->S[c], s, t, f);
-    this->S[c] = t;
-    const double first =
-      Fma(a.Hi[i], b.Lo[j], Fma(a.Lo[i], b.Hi[j], Fma(-a.Hi[j], b.Lo[i], -(a.Lo[j] * b.Hi[i]))));
-    const double err = (e + f) + ((e1 - e2) + first);
-    this->Err[c] += err;
-    if (TrackBound)
-    {
-      this->Permanent[c] += std::fabs(p1) + std::fabs(p2);
-      this->ErrMagnitude[c] += std::fabs(err);
-    }
   }
 
   PHONGVTK_INLINE void Add(const Diff& a, const Diff& b)
   {
-    this->AddComponent(0, 1, 2, a, b);
-    this->AddComponent(1, 2, 0, a, b);
-    this->AddComponent(2, 0, 1, a, b);
+    // Component c of a x b is a_(c+1) b_(c+2) - a_(c+2) b_(c+1), all three lanes at once, with
+    // a = ah + al, b = bh + bl; al * bl is second order and dropped.
+    V4 p1, e1, p2, e2, s, e, t, f;
+    TwoProduct(a.HiYZX, b.HiZXY, p1, e1);
+    TwoProduct(a.HiZXY, b.HiYZX, p2, e2);
+    TwoSum(p1, -p2, s, e);
+    TwoSum(this->S, s, t, f);
+    this->S = t;
+    const V4 first =
+      Fma(a.HiYZX, b.LoZXY, Fma(a.LoYZX, b.HiZXY, Fma(-a.HiZXY, b.LoYZX, -(a.LoZXY * b.HiYZX))));
+    const V4 err = (e + f) + ((e1 - e2) + first);
+    this->Err += err;
     if (TrackBound)
     {
-      ++this->Triangles;
+      this->Permanent += Abs(p1) + Abs(p2);
+      this->ErrMagnitude += Abs(err);
     }
   }
 
   /// COMPENSATED finish: double area vector, double normalisation.
   PHONGVTK_INLINE bool Finish(AreaVector& out, bool mustSucceed) const
   {
-    double w[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      w[c] = this->S[c] + this->Err[c];
-    }
+    const V4 sum = this->S + this->Err;
+    const double w[3] = { sum[0], sum[1], sum[2] };
     return DoubleArith<T>::FinishVector(w, out, mustSucceed);
   }
 
@@ -502,31 +580,29 @@ struct CompensatedArith
    * EXACT filter: true when every component is certified to carry a relative error below 2^-56
    * (or is certified exactly zero), so that NormalizeFaithful returns a faithful normal.
    */
-  PHONGVTK_INLINE bool FinishCertified(AreaVector& out) const
+  PHONGVTK_INLINE bool FinishCertified(AreaVector& out, std::int64_t n) const
   {
-    const double triangles = static_cast<double>(this->Triangles) + 1.0;
+    const double triangles = static_cast<double>(n - 1); // fan triangles + 1
     // Absolute slack for error terms lost to underflow (at most 2^-1074 per operation).
     const double underflow = 32.0 * triangles * 0x1p-1074;
-    DD w[3];
+    V4 hi, lo;
+    TwoSum(this->S, this->Err, hi, lo);
+    const V4 bound = 64.0 * 0x1p-106 * this->Permanent +
+      (1.01 * triangles * 0x1p-53) * this->ErrMagnitude + 0x1p-53 * Abs(this->Err) + underflow;
     for (int c = 0; c < 3; ++c)
     {
-      if (!(this->Permanent[c] <= 0x1p900)) // overflow risk or non-finite input
+      // Overflow risk or non-finite input (NaN fails every comparison).
+      if (!(this->Permanent[c] <= 0x1p900))
       {
         return false;
       }
-      TwoSum(this->S[c], this->Err[c], w[c].Hi, w[c].Lo);
-      if (this->Permanent[c] == 0.0)
-      {
-        continue; // every product was exactly zero
-      }
-      const double bound = 64.0 * 0x1p-106 * this->Permanent[c] +
-        1.01 * triangles * 0x1p-53 * this->ErrMagnitude[c] + 0x1p-53 * std::fabs(this->Err[c]) +
-        underflow;
-      if (!(bound <= 0x1p-56 * std::fabs(w[c].Hi)))
+      // Permanent == 0: every product entering the component was exactly zero.
+      if (this->Permanent[c] != 0.0 && !(bound[c] <= 0x1p-56 * std::fabs(hi[c])))
       {
         return false;
       }
     }
+    const DD w[3] = { { hi[0], lo[0] }, { hi[1], lo[1] }, { hi[2], lo[2] } };
     int k;
     double len;
     if (!NormalizeFaithful(w, out.Normal, len, k))
@@ -536,7 +612,7 @@ struct CompensatedArith
     }
     for (int c = 0; c < 3; ++c)
     {
-      out.Vector[c] = Scale2(w[c].Hi, -k) + Scale2(w[c].Lo, -k);
+      out.Vector[c] = k == 0 ? w[c].Hi + w[c].Lo : Scale2(w[c].Hi, -k) + Scale2(w[c].Lo, -k);
     }
     out.Length = len;
     out.Exponent = k;
@@ -660,7 +736,7 @@ PHONGVTK_INLINE void ComputeAreaVector(const VertexFn& vertex, std::int64_t n, A
     detail::AccumulateFan<false>(acc, vertex, n, identity);
     if constexpr (A == Accuracy::Exact)
     {
-      if (acc.FinishCertified(out))
+      if (acc.FinishCertified(out, n))
       {
         return;
       }

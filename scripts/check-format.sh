@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Fails when a C++ file of the project is not clang-format clean (VTK's style, .clang-format).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$here"
+mapfile -t files < <(find Filters Testing -name '*.h' -o -name '*.cxx' | sort)
+if ! clang-format --dry-run -Werror "${files[@]}"; then
+  echo "phongvtk: the files above are not clang-format clean; run: clang-format -i <file>" >&2
+  exit 1
+fi
+echo "phongvtk: clang-format clean (${#files[@]} files)"
