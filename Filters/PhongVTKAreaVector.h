@@ -173,7 +173,7 @@ PHONGVTK_INLINE V4 Fma(V4 a, V4 b, V4 c)
     reinterpret_cast<__m256d>(a), reinterpret_cast<__m256d>(b), reinterpret_cast<__m256d>(c)));
 #else
   return V4{ Fma(a[0], b[0], c[0]), Fma(a[1], b[1], c[1]), Fma(a[2], b[2], c[2]),
-             Fma(a[3], b[3], c[3]) };
+    Fma(a[3], b[3], c[3]) };
 #endif
 }
 
@@ -322,8 +322,8 @@ struct Scaling
  * `vertex(i)` returns a pointer to the coordinates of the polygon's i-th vertex.
  */
 template <bool Scaled, class Arith, class VertexFn>
-PHONGVTK_INLINE void AccumulateFan(Arith& acc, const VertexFn& vertex, std::int64_t n,
-                                   const Scaling& scaling)
+PHONGVTK_INLINE void AccumulateFan(
+  Arith& acc, const VertexFn& vertex, std::int64_t n, const Scaling& scaling)
 {
   using Diff = typename Arith::Diff;
   const auto* p0 = vertex(0);
@@ -410,7 +410,7 @@ struct FastArith
   {
     int k;
     if (!(std::isfinite(w[0]) && std::isfinite(w[1]) && std::isfinite(w[2])) ||
-        !NormalizeDouble(w, out.Normal, out.Length, k))
+      !NormalizeDouble(w, out.Normal, out.Length, k))
     {
       out.SetZero(StatusDegenerate);
       return true;

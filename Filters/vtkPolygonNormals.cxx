@@ -177,18 +177,18 @@ double LargestFiniteCoordinate(const T* pts, vtkIdType n)
 {
   vtkSMPThreadLocal<double> local(0.0);
   vtkSMPTools::For(0, n,
-                   [&](vtkIdType begin, vtkIdType end)
-                   {
-                     double& m = local.Local();
-                     for (vtkIdType k = 3 * begin; k < 3 * end; ++k)
-                     {
-                       const double x = std::fabs(static_cast<double>(pts[k]));
-                       if (x <= std::numeric_limits<double>::max())
-                       {
-                         m = std::max(m, x);
-                       }
-                     }
-                   });
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double& m = local.Local();
+      for (vtkIdType k = 3 * begin; k < 3 * end; ++k)
+      {
+        const double x = std::fabs(static_cast<double>(pts[k]));
+        if (x <= std::numeric_limits<double>::max())
+        {
+          m = std::max(m, x);
+        }
+      }
+    });
   double m = 0.0;
   for (double v : local)
   {
@@ -203,7 +203,7 @@ double LargestFiniteCoordinate(const T* pts, vtkIdType n)
  */
 template <class T, class VertexIdFn>
 void ScatterFace(int weighting, const T* pts, int shift, const VertexIdFn& vertexId, std::int64_t n,
-                 const double face[3], double* sums)
+  const double face[3], double* sums)
 {
   if (weighting == vtkPolygonNormals::AREA || weighting == vtkPolygonNormals::UNIFORM)
   {
@@ -230,7 +230,7 @@ void ScatterFace(int weighting, const T* pts, int shift, const VertexIdFn& verte
       b[c] = std::ldexp(static_cast<double>(next[c]) - static_cast<double>(v[c]), -shift);
     }
     const double x[3] = { b[1] * a[2] - b[2] * a[1], b[2] * a[0] - b[0] * a[2],
-                          b[0] * a[1] - b[1] * a[0] };
+      b[0] * a[1] - b[1] * a[0] };
     const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
     const double bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
     if (!(aa > 0.0 && bb > 0.0 && std::isfinite(aa) && std::isfinite(bb)))
@@ -263,24 +263,24 @@ template <class O>
 void NormalizeSums(const std::vector<double>& sums, O* normals, vtkIdType n)
 {
   vtkSMPTools::For(0, n,
-                   [&](vtkIdType begin, vtkIdType end)
-                   {
-                     for (vtkIdType p = begin; p < end; ++p)
-                     {
-                       double unit[3] = { 0.0, 0.0, 0.0 };
-                       double length;
-                       int k;
-                       const double* s = sums.data() + 3 * p;
-                       if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]))
-                       {
-                         phongvtk::detail::NormalizeDouble(s, unit, length, k);
-                       }
-                       for (int c = 0; c < 3; ++c)
-                       {
-                         normals[3 * p + c] = static_cast<O>(unit[c]);
-                       }
-                     }
-                   });
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        double unit[3] = { 0.0, 0.0, 0.0 };
+        double length;
+        int k;
+        const double* s = sums.data() + 3 * p;
+        if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]))
+        {
+          phongvtk::detail::NormalizeDouble(s, unit, length, k);
+        }
+        for (int c = 0; c < 3; ++c)
+        {
+          normals[3 * p + c] = static_cast<O>(unit[c]);
+        }
+      }
+    });
 }
 
 /// Visits the storage of a vtkCellArray with typed offsets and connectivity pointers.
@@ -343,14 +343,12 @@ public:
       const vtkIdType n = cells ? cells->GetNumberOfCells() : 0;
       if (n > 0)
       {
-        cells->Visit(
-          RawCells{},
+        cells->Visit(RawCells{},
           [&](const auto* offsets, const auto* conn)
           {
             using Id =
               std::make_unsigned_t<std::remove_cv_t<std::remove_pointer_t<decltype(conn)>>>;
-            vtkSMPTools::For(
-              0, n,
+            vtkSMPTools::For(0, n,
               [&](vtkIdType begin, vtkIdType end)
               {
                 CellCounts& local = counts.Local();
@@ -359,7 +357,7 @@ public:
                   for (auto k = offsets[cell]; k < offsets[cell + 1]; ++k)
                   {
                     if (static_cast<Id>(conn[k]) >= static_cast<Id>(this->NumberOfPoints) &&
-                        (local.FirstBadCell < 0 || first + cell < local.FirstBadCell))
+                      (local.FirstBadCell < 0 || first + cell < local.FirstBadCell))
                     {
                       local.FirstBadCell = first + cell;
                     }
@@ -396,7 +394,7 @@ public:
 private:
   /// Polygons or strips, in blocks so that progress is reported and abort honoured.
   void RunSurfaces(vtkCellArray* cells, vtkIdType firstCell, bool strips,
-                   vtkSMPThreadLocal<CellCounts>& counts, vtkIdType numCells)
+    vtkSMPThreadLocal<CellCounts>& counts, vtkIdType numCells)
   {
     const vtkIdType n = cells ? cells->GetNumberOfCells() : 0;
     if (n == 0)
@@ -404,47 +402,46 @@ private:
       return;
     }
     cells->Visit(RawCells{},
-                 [&](const auto* offsets, const auto* conn)
-                 {
-                   using Off = std::remove_cv_t<std::remove_pointer_t<decltype(offsets)>>;
-                   using Conn = std::remove_cv_t<std::remove_pointer_t<decltype(conn)>>;
-                   switch (this->AccuracyMode)
-                   {
-                     case vtkPolygonNormals::FAST:
-                       this->RunBlocks<Accuracy::Fast, Off, Conn>(offsets, conn, n, firstCell,
-                                                                  strips, counts, numCells);
-                       break;
-                     case vtkPolygonNormals::COMPENSATED:
-                       this->RunBlocks<Accuracy::Compensated, Off, Conn>(
-                         offsets, conn, n, firstCell, strips, counts, numCells);
-                       break;
-                     case vtkPolygonNormals::EXACT:
-                       this->RunBlocks<Accuracy::Exact, Off, Conn>(offsets, conn, n, firstCell,
-                                                                   strips, counts, numCells);
-                       break;
-                     default:
-                       this->RunBlocks<Accuracy::Double, Off, Conn>(offsets, conn, n, firstCell,
-                                                                    strips, counts, numCells);
-                       break;
-                   }
-                 });
+      [&](const auto* offsets, const auto* conn)
+      {
+        using Off = std::remove_cv_t<std::remove_pointer_t<decltype(offsets)>>;
+        using Conn = std::remove_cv_t<std::remove_pointer_t<decltype(conn)>>;
+        switch (this->AccuracyMode)
+        {
+          case vtkPolygonNormals::FAST:
+            this->RunBlocks<Accuracy::Fast, Off, Conn>(
+              offsets, conn, n, firstCell, strips, counts, numCells);
+            break;
+          case vtkPolygonNormals::COMPENSATED:
+            this->RunBlocks<Accuracy::Compensated, Off, Conn>(
+              offsets, conn, n, firstCell, strips, counts, numCells);
+            break;
+          case vtkPolygonNormals::EXACT:
+            this->RunBlocks<Accuracy::Exact, Off, Conn>(
+              offsets, conn, n, firstCell, strips, counts, numCells);
+            break;
+          default:
+            this->RunBlocks<Accuracy::Double, Off, Conn>(
+              offsets, conn, n, firstCell, strips, counts, numCells);
+            break;
+        }
+      });
   }
 
   template <Accuracy A, class Off, class Conn>
   void RunBlocks(const Off* offsets, const Conn* conn, vtkIdType n, vtkIdType firstCell,
-                 bool strips, vtkSMPThreadLocal<CellCounts>& counts, vtkIdType numCells)
+    bool strips, vtkSMPThreadLocal<CellCounts>& counts, vtkIdType numCells)
   {
-    AreaVectorWorker<A, T, O, Off, Conn> worker{
-      this->Points, this->NumberOfPoints, offsets, conn, strips, firstCell, this->Out, &counts
-    };
+    AreaVectorWorker<A, T, O, Off, Conn> worker{ this->Points, this->NumberOfPoints, offsets, conn,
+      strips, firstCell, this->Out, &counts };
     const vtkIdType block = std::max<vtkIdType>(65536, (n + 9) / 10);
     for (vtkIdType begin = 0; begin < n && !this->Filter->GetAbortExecute(); begin += block)
     {
       const vtkIdType end = std::min(n, begin + block);
       vtkSMPTools::For(begin, end, worker);
       const double share = this->PointNormals ? 0.8 : 1.0;
-      this->Filter->UpdateProgress(share * static_cast<double>(firstCell + end) /
-                                   static_cast<double>(numCells));
+      this->Filter->UpdateProgress(
+        share * static_cast<double>(firstCell + end) / static_cast<double>(numCells));
     }
   }
 
@@ -460,22 +457,22 @@ private:
     if (numPolys > 0)
     {
       polys->Visit(RawCells{},
-                   [&](const auto* offsets, const auto* conn)
-                   {
-                     for (vtkIdType cell = 0; cell < numPolys; ++cell)
-                     {
-                       const double* face = this->FaceData.data() + 3 * (firstPoly + cell);
-                       if (face[0] == 0.0 && face[1] == 0.0 && face[2] == 0.0)
-                       {
-                         continue; // degenerate or flagged: no direction to contribute
-                       }
-                       const auto* ids = conn + offsets[cell];
-                       ScatterFace(
-                         weighting, pts, shift,
-                         [ids](std::int64_t i) { return static_cast<vtkIdType>(ids[i]); },
-                         offsets[cell + 1] - offsets[cell], face, sums.data());
-                     }
-                   });
+        [&](const auto* offsets, const auto* conn)
+        {
+          for (vtkIdType cell = 0; cell < numPolys; ++cell)
+          {
+            const double* face = this->FaceData.data() + 3 * (firstPoly + cell);
+            if (face[0] == 0.0 && face[1] == 0.0 && face[2] == 0.0)
+            {
+              continue; // degenerate or flagged: no direction to contribute
+            }
+            const auto* ids = conn + offsets[cell];
+            ScatterFace(
+              weighting, pts, shift,
+              [ids](std::int64_t i) { return static_cast<vtkIdType>(ids[i]); },
+              offsets[cell + 1] - offsets[cell], face, sums.data());
+          }
+        });
     }
     this->Filter->UpdateProgress(0.9);
     vtkCellArray* strips = this->Input->GetStrips();
@@ -492,54 +489,53 @@ private:
     const T* pts = this->Points;
     const int shift = this->Out.GlobalShift;
     strips->Visit(RawCells{},
-                  [&](const auto* offsets, const auto* conn)
-                  {
-                    for (vtkIdType cell = 0; cell < strips->GetNumberOfCells(); ++cell)
-                    {
-                      const auto* ids = conn + offsets[cell];
-                      const std::int64_t n = offsets[cell + 1] - offsets[cell];
-                      for (std::int64_t j = 0; j + 2 < n; ++j)
-                      {
-                        const vtkIdType tri[3] = { static_cast<vtkIdType>(ids[j + (j & 1)]),
-                                                   static_cast<vtkIdType>(ids[j + 1 - (j & 1)]),
-                                                   static_cast<vtkIdType>(ids[j + 2]) };
-                        auto vertex = [pts, &tri](std::int64_t i)
-                        {
-                          return pts + 3 * tri[i];
-                        };
-                        AreaVector r;
-                        switch (this->AccuracyMode)
-                        {
-                          case vtkPolygonNormals::FAST:
-                            phongvtk::ComputeAreaVector<Accuracy::Fast, T>(vertex, 3, r);
-                            break;
-                          case vtkPolygonNormals::COMPENSATED:
-                            phongvtk::ComputeAreaVector<Accuracy::Compensated, T>(vertex, 3, r);
-                            break;
-                          case vtkPolygonNormals::EXACT:
-                            phongvtk::ComputeAreaVector<Accuracy::Exact, T>(vertex, 3, r);
-                            break;
-                          default:
-                            phongvtk::ComputeAreaVector<Accuracy::Double, T>(vertex, 3, r);
-                            break;
-                        }
-                        if (r.Status != phongvtk::StatusOk)
-                        {
-                          continue;
-                        }
-                        double face[3];
-                        for (int c = 0; c < 3; ++c)
-                        {
-                          face[c] = this->Weighting == vtkPolygonNormals::AREA
-                            ? std::ldexp(r.Vector[c], r.Exponent - 2 * shift)
-                            : r.Normal[c];
-                        }
-                        ScatterFace(
-                          this->Weighting, pts, shift, [&tri](std::int64_t i) { return tri[i]; }, 3,
-                          face, sums.data());
-                      }
-                    }
-                  });
+      [&](const auto* offsets, const auto* conn)
+      {
+        for (vtkIdType cell = 0; cell < strips->GetNumberOfCells(); ++cell)
+        {
+          const auto* ids = conn + offsets[cell];
+          const std::int64_t n = offsets[cell + 1] - offsets[cell];
+          for (std::int64_t j = 0; j + 2 < n; ++j)
+          {
+            const vtkIdType tri[3] = { static_cast<vtkIdType>(ids[j + (j & 1)]),
+              static_cast<vtkIdType>(ids[j + 1 - (j & 1)]), static_cast<vtkIdType>(ids[j + 2]) };
+            auto vertex = [pts, &tri](std::int64_t i)
+            {
+              return pts + 3 * tri[i];
+            };
+            AreaVector r;
+            switch (this->AccuracyMode)
+            {
+              case vtkPolygonNormals::FAST:
+                phongvtk::ComputeAreaVector<Accuracy::Fast, T>(vertex, 3, r);
+                break;
+              case vtkPolygonNormals::COMPENSATED:
+                phongvtk::ComputeAreaVector<Accuracy::Compensated, T>(vertex, 3, r);
+                break;
+              case vtkPolygonNormals::EXACT:
+                phongvtk::ComputeAreaVector<Accuracy::Exact, T>(vertex, 3, r);
+                break;
+              default:
+                phongvtk::ComputeAreaVector<Accuracy::Double, T>(vertex, 3, r);
+                break;
+            }
+            if (r.Status != phongvtk::StatusOk)
+            {
+              continue;
+            }
+            double face[3];
+            for (int c = 0; c < 3; ++c)
+            {
+              face[c] = this->Weighting == vtkPolygonNormals::AREA
+                ? std::ldexp(r.Vector[c], r.Exponent - 2 * shift)
+                : r.Normal[c];
+            }
+            ScatterFace(
+              this->Weighting, pts, shift, [&tri](std::int64_t i) { return tri[i]; }, 3, face,
+              sums.data());
+          }
+        }
+      });
   }
 };
 
@@ -602,7 +598,7 @@ namespace
 {
 template <class T, class O>
 bool Dispatch(vtkPolygonNormals* self, vtkPolyData* input, vtkPolyData* output, const T* points,
-              vtkIdType& nonFinite, vtkIdType& firstBadCell)
+  vtkIdType& nonFinite, vtkIdType& firstBadCell)
 {
   const vtkIdType numCells = input->GetNumberOfCells();
   const vtkIdType numPoints = input->GetNumberOfPoints();
@@ -678,8 +674,7 @@ bool Dispatch(vtkPolygonNormals* self, vtkPolyData* input, vtkPolyData* output, 
 
 //------------------------------------------------------------------------------
 int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
-                                   vtkInformationVector** inputVector,
-                                   vtkInformationVector* outputVector)
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);

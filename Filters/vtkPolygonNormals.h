@@ -156,7 +156,7 @@ protected:
   ~vtkPolygonNormals() override;
 
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-                  vtkInformationVector* outputVector) override;
+    vtkInformationVector* outputVector) override;
 
   int Accuracy = DOUBLE;
   int PointWeighting = AREA;
