@@ -175,24 +175,23 @@ struct AreaVectorWorker
 template <class T>
 double LargestFiniteCoordinate(const T* pts, vtkIdType n)
 {
-  vtkSMPThreadLocal<double> local(0.0);
+  vtkSMPThreadLocal<T> local(T(0));
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
     {
-      double& m = local.Local();
+      T m = local.Local();
       for (vtkIdType k = 3 * begin; k < 3 * end; ++k)
       {
-        const double x = std::fabs(static_cast<double>(pts[k]));
-        if (x <= std::numeric_limits<double>::max())
-        {
-          m = std::max(m, x);
-        }
+        const T x = std::fabs(pts[k]);
+        // A select rather than a branch, so that the loop vectorises; NaN and Inf are skipped.
+        m = (x > m && x <= std::numeric_limits<T>::max()) ? x : m;
       }
+      local.Local() = m;
     });
   double m = 0.0;
-  for (double v : local)
+  for (T v : local)
   {
-    m = std::max(m, v);
+    m = std::max(m, static_cast<double>(v));
   }
   return m;
 }
