@@ -64,10 +64,10 @@ constexpr mp_bitcnt_t ReferenceBits = 1024;
 inline std::array<mpf_class, 3> ReferenceNormal(const ExactAreaVector& w)
 {
   std::array<mpf_class, 3> n = { mpf_class(0, ReferenceBits), mpf_class(0, ReferenceBits),
-                                 mpf_class(0, ReferenceBits) };
+    mpf_class(0, ReferenceBits) };
   mpf_class sum(0, ReferenceBits);
   mpf_class x[3] = { mpf_class(0, ReferenceBits), mpf_class(0, ReferenceBits),
-                     mpf_class(0, ReferenceBits) };
+    mpf_class(0, ReferenceBits) };
   for (int c = 0; c < 3; ++c)
   {
     x[c] = w.W[c];
@@ -147,7 +147,7 @@ inline double AngleError(const double computed[3], const std::array<mpf_class, 3
 {
   mpf_class cross2(0, ReferenceBits), dot(0, ReferenceBits);
   mpf_class n[3] = { mpf_class(computed[0], ReferenceBits), mpf_class(computed[1], ReferenceBits),
-                     mpf_class(computed[2], ReferenceBits) };
+    mpf_class(computed[2], ReferenceBits) };
   for (int c = 0; c < 3; ++c)
   {
     const int a = (c + 1) % 3;
