@@ -519,6 +519,7 @@ struct CompensatedArith
   V4 Err = {};          // every error term of the leading sum and of the products
   V4 Permanent = {};    // P_c, sum of |products| (only with TrackBound)
   V4 ErrMagnitude = {}; // M_c, sum of |terms added to Err| (only with TrackBound)
+  V4i Tiny = {};        // a non-zero difference below 2^-480: products may underflow to zero
 
   template <bool Scaled>
   static PHONGVTK_INLINE Diff Difference(const T* p, const T* p0, const Scaling& s)
@@ -565,6 +566,9 @@ struct CompensatedArith
     {
       this->Permanent += Abs(p1) + Abs(p2);
       this->ErrMagnitude += Abs(err);
+      const V4 small = { 0x1p-480, 0x1p-480, 0x1p-480, 0x1p-480 };
+      const V4 zero = {};
+      this->Tiny |= ((Abs(a.Hi) < small) & (a.Hi != zero)) | ((Abs(b.Hi) < small) & (b.Hi != zero));
     }
   }
 
@@ -589,6 +593,12 @@ struct CompensatedArith
     TwoSum(this->S, this->Err, hi, lo);
     const V4 bound = 64.0 * 0x1p-106 * this->Permanent +
       (1.01 * triangles * 0x1p-53) * this->ErrMagnitude + 0x1p-53 * Abs(this->Err) + underflow;
+    // A product that underflowed to zero would pass for an exact zero: leave such polygons to
+    // the exact fallback.
+    if (this->Tiny[0] | this->Tiny[1] | this->Tiny[2])
+    {
+      return false;
+    }
     for (int c = 0; c < 3; ++c)
     {
       // Overflow risk or non-finite input (NaN fails every comparison).
