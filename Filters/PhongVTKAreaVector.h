@@ -190,9 +190,14 @@ PHONGVTK_INLINE void TwoProduct(V4 a, V4 b, V4& p, V4& e)
   e = Fma(a, b, -p);
 }
 
-PHONGVTK_INLINE double MaxAbs3(const double v[3])
+/// Largest |component|; NaN when a component is NaN, which std::max alone may drop (a NaN area
+/// vector would then pass the safe-window tests).
+template <class Real>
+PHONGVTK_INLINE Real MaxAbs3(const Real v[3])
 {
-  return std::max(std::fabs(v[0]), std::max(std::fabs(v[1]), std::fabs(v[2])));
+  const Real a = std::fabs(v[0]), b = std::fabs(v[1]), c = std::fabs(v[2]);
+  const Real sum = a + b + c; // NaN exactly when a component is NaN: no term is negative
+  return sum == sum ? std::max(a, std::max(b, c)) : sum;
 }
 
 /// 2^k for k in [-1022, 1023], built from its bits (std::ldexp is a slow library call).
@@ -381,8 +386,7 @@ struct FastArith
   /// Direct result if it is inside float's safe window, else false (caller rescales).
   PHONGVTK_INLINE bool Finish(AreaVector& out, bool mustSucceed) const
   {
-    const float m =
-      std::max(std::fabs(this->W[0]), std::max(std::fabs(this->W[1]), std::fabs(this->W[2])));
+    const float m = MaxAbs3(this->W);
     if (m >= 0x1p-60f && m <= 0x1p60f)
     {
       const float len =
@@ -769,19 +773,30 @@ PHONGVTK_INLINE void ComputeAreaVector(const VertexFn& vertex, std::int64_t n, A
     out.SetZero(StatusDegenerate);
     return;
   }
+  // Undo the scaling of the differences: w scales with the square of the differences.
+  const int shift = -scaling.Shift + (scaling.Pre != 1.0 ? 2 : 0);
+  Arith acc;
+  detail::AccumulateFan<true>(acc, vertex, n, scaling);
   if constexpr (A == Accuracy::Exact)
   {
+    // Scaling the exact differences by a power of two keeps them exact, unless they overflowed
+    // and the coordinates themselves had to be scaled down (Pre != 1): certify the scaled
+    // polygon, or decide it in exact integer arithmetic.
+    if (scaling.Pre == 1.0 && acc.FinishCertified(out, n))
+    {
+      out.Exponent += (out.Status == StatusOk) ? 2 * shift : 0;
+      return;
+    }
     detail::ExactFallback<T>(vertex, n, out);
     return;
   }
-  Arith acc;
-  detail::AccumulateFan<true>(acc, vertex, n, scaling);
-  acc.Finish(out, true);
-  if (out.Status == StatusOk)
+  else
   {
-    // Undo the scaling of the differences: w scales with the square of the differences.
-    const int shift = -scaling.Shift + (scaling.Pre != 1.0 ? 2 : 0);
-    out.Exponent += 2 * shift;
+    acc.Finish(out, true);
+    if (out.Status == StatusOk)
+    {
+      out.Exponent += 2 * shift;
+    }
   }
 }
 
