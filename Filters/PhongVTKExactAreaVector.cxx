@@ -143,12 +143,15 @@ void ExactAreaVector(const double* xyz, std::int64_t n, AreaVector& out)
     out.SetZero(StatusDegenerate); // the exact area vector is zero
     return;
   }
-  // W * 2^-bits has components below 1 in magnitude: no overflow, and underflow only for
-  // components below 2^-1022 of the largest one (they round to subnormal normal components).
+  // W * 2^(500 - bits) has components below 2^500, the top of NormalizeFaithful's window: no
+  // overflow, and components down to 2^-1522 of the largest one stay normal numbers. (Scaled
+  // below 1, a component under 2^-1022 of the largest was first rounded to a subnormal, then
+  // the division by a norm below 1 doubled that error: normal components off by 1.15 ulp.)
+  const long shift = bits - 500;
   DD v[3];
   for (int c = 0; c < 3; ++c)
   {
-    v[c] = ToScaledDD(w[c].get(), bits);
+    v[c] = ToScaledDD(w[c].get(), shift);
   }
   int k;
   double len;
@@ -158,7 +161,7 @@ void ExactAreaVector(const double* xyz, std::int64_t n, AreaVector& out)
     out.Vector[c] = Scale2(v[c].Hi, -k) + Scale2(v[c].Lo, -k);
   }
   out.Length = len;
-  out.Exponent = static_cast<int>(bits) + k + 2 * emin;
+  out.Exponent = static_cast<int>(shift) + k + 2 * emin;
   out.Status = StatusOk;
 }
 

@@ -196,6 +196,19 @@ double LargestFiniteCoordinate(const T* pts, vtkIdType n)
   return m;
 }
 
+/// (x - y) * 2^-shift. When x - y overflows (coordinates near the top of the double range), the
+/// halves are subtracted instead: exact for such large coordinates.
+template <class T>
+inline double ScaledEdge(T x, T y, int shift)
+{
+  const double d = static_cast<double>(x) - static_cast<double>(y);
+  if (std::isinf(d))
+  {
+    return std::ldexp(0.5 * static_cast<double>(x) - 0.5 * static_cast<double>(y), 1 - shift);
+  }
+  return std::ldexp(d, -shift);
+}
+
 /**
  * Adds one face's contribution to the point normal sums of its corners. `vertex(i)` gives the
  * face's i-th point id; `face` is the face's FaceData entry (scaled area vector or unit normal).
@@ -225,8 +238,8 @@ void ScatterFace(int weighting, const T* pts, int shift, const VertexIdFn& verte
     double a[3], b[3];
     for (int c = 0; c < 3; ++c)
     {
-      a[c] = std::ldexp(static_cast<double>(prev[c]) - static_cast<double>(v[c]), -shift);
-      b[c] = std::ldexp(static_cast<double>(next[c]) - static_cast<double>(v[c]), -shift);
+      a[c] = ScaledEdge(prev[c], v[c], shift);
+      b[c] = ScaledEdge(next[c], v[c], shift);
     }
     const double x[3] = { b[1] * a[2] - b[2] * a[1], b[2] * a[0] - b[0] * a[2],
       b[0] * a[1] - b[1] * a[0] };
@@ -646,10 +659,13 @@ bool Dispatch(vtkPolygonNormals* self, vtkPolyData* input, vtkPolyData* output, 
   {
     return false;
   }
+  // AddArray + SetActiveNormals rather than SetNormals: SetNormals removes the current active
+  // normals, and an input array of another name must pass through.
   vtkCellData* cd = output->GetCellData();
   if (normals)
   {
-    cd->SetNormals(normals);
+    cd->AddArray(normals);
+    cd->SetActiveNormals(normals->GetName());
   }
   if (areaVectors)
   {
@@ -665,7 +681,8 @@ bool Dispatch(vtkPolygonNormals* self, vtkPolyData* input, vtkPolyData* output, 
   }
   if (pointNormals)
   {
-    output->GetPointData()->SetNormals(pointNormals);
+    output->GetPointData()->AddArray(pointNormals);
+    output->GetPointData()->SetActiveNormals(pointNormals->GetName());
   }
   return true;
 }
@@ -726,6 +743,12 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkErrorMacro("Cell " << firstBadCell << " refers to a point id outside [0, "
                           << input->GetNumberOfPoints() << "); the output is empty.");
+    output->Initialize();
+    return 1;
+  }
+  if (this->GetAbortExecute())
+  {
+    // Stopped part-way: the output arrays hold unwritten values, so nothing is delivered.
     output->Initialize();
     return 1;
   }
