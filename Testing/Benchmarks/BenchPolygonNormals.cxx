@@ -1,0 +1,231 @@
+// Google Benchmark of vtkPolygonNormals against VTK's own normal filters, measured side by side
+// in one run, with a table of ratios at the end.
+//
+//   VTK_SMP_BACKEND_IN_USE=STDThread build/bin/PhongVTKBenchPolygonNormals
+//       [--benchmark_repetitions=5] [--benchmark_filter=Sphere]
+//
+// Meshes: vtkSphereSource 1000 x 1000 (~2,000,000 triangles, float points) and CGAL's bunny
+// (75,408 triangles, double points). Anchors: vtkPolyDataNormals with cell normals only, with
+// point normals (splitting and consistency off), and vtkTriangleMeshPointNormals. The memory
+// floor of cell normals is the bytes the filter must touch divided by the streaming bandwidth
+// measured by a copy benchmark in the same run.
+#include "vtkPolygonNormals.h"
+
+#include "PhongVTKBenchmarkMeshes.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkSMPTools.h"
+#include "vtkTriangleMeshPointNormals.h"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct Mesh
+{
+  std::string Name;
+  vtkSmartPointer<vtkPolyData> Data;
+};
+
+std::vector<Mesh>& Meshes()
+{
+  static std::vector<Mesh> meshes;
+  return meshes;
+}
+
+void RunFilter(benchmark::State& state, vtkPolyDataAlgorithm* filter, vtkPolyData* input)
+{
+  filter->SetInputData(input);
+  for (auto _ : state)
+  {
+    filter->Modified();
+    filter->Update();
+    benchmark::DoNotOptimize(filter->GetOutput());
+  }
+  state.counters["ns/cell"] = benchmark::Counter(static_cast<double>(input->GetNumberOfCells()),
+    benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void PolyDataNormalsCells(benchmark::State& state, vtkPolyData* input)
+{
+  vtkNew<vtkPolyDataNormals> f;
+  f->ComputeCellNormalsOn();
+  f->ComputePointNormalsOff();
+  f->SplittingOff();
+  f->ConsistencyOff();
+  RunFilter(state, f, input);
+}
+
+void PolyDataNormalsPoints(benchmark::State& state, vtkPolyData* input)
+{
+  vtkNew<vtkPolyDataNormals> f;
+  f->ComputeCellNormalsOff();
+  f->ComputePointNormalsOn();
+  f->SplittingOff();
+  f->ConsistencyOff();
+  RunFilter(state, f, input);
+}
+
+void TriangleMeshPointNormals(benchmark::State& state, vtkPolyData* input)
+{
+  vtkNew<vtkTriangleMeshPointNormals> f;
+  RunFilter(state, f, input);
+}
+
+void PolygonNormals(benchmark::State& state, vtkPolyData* input, int accuracy, bool points)
+{
+  vtkNew<vtkPolygonNormals> f;
+  f->SetAccuracy(accuracy);
+  f->SetComputeCellNormals(!points);
+  f->SetComputePointNormals(points);
+  RunFilter(state, f, input);
+}
+
+/// Streaming bandwidth: copy of a 256 MiB buffer (read + write bytes per second).
+void MemoryCopy(benchmark::State& state)
+{
+  const std::size_t bytes = std::size_t(256) << 20;
+  std::vector<char> a(bytes, 1), b(bytes, 2);
+  for (auto _ : state)
+  {
+    std::memcpy(b.data(), a.data(), bytes);
+    benchmark::ClobberMemory();
+  }
+  state.SetBytesProcessed(static_cast<int64_t>(2 * bytes) * state.iterations());
+}
+
+/// Bytes vtkPolygonNormals must read and write for cell normals (float output).
+double CellNormalBytes(vtkPolyData* mesh)
+{
+  vtkCellArray* polys = mesh->GetPolys();
+  return static_cast<double>(mesh->GetPoints()->GetData()->GetDataSize()) *
+    mesh->GetPoints()->GetData()->GetDataTypeSize() +
+    static_cast<double>(polys->GetOffsetsArray()->GetDataSize()) *
+    polys->GetOffsetsArray()->GetDataTypeSize() +
+    static_cast<double>(polys->GetConnectivityArray()->GetDataSize()) *
+    polys->GetConnectivityArray()->GetDataTypeSize() +
+    12.0 * static_cast<double>(mesh->GetNumberOfCells());
+}
+
+const char* ModeName(int mode)
+{
+  static const char* names[] = { "FAST", "DOUBLE", "COMPENSATED", "EXACT" };
+  return names[mode];
+}
+
+/// Collects the median (or only) real time of every benchmark for the ratio table.
+class RatioReporter : public benchmark::ConsoleReporter
+{
+public:
+  std::map<std::string, double> Seconds;
+  double Bandwidth = 0.0;
+
+  void ReportRuns(const std::vector<Run>& runs) override
+  {
+    benchmark::ConsoleReporter::ReportRuns(runs);
+    for (const Run& run : runs)
+    {
+      const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
+      const bool single = run.run_type == Run::RT_Iteration && run.repetitions <= 1;
+      if (!median && !single)
+      {
+        continue;
+      }
+      const std::string name = run.run_name.function_name;
+      this->Seconds[name] = run.real_accumulated_time / static_cast<double>(run.iterations);
+      if (name == "MemoryCopy")
+      {
+        auto it = run.counters.find("bytes_per_second");
+        if (it != run.counters.end())
+        {
+          this->Bandwidth = it->second;
+        }
+      }
+    }
+  }
+};
+} // namespace
+
+int main(int argc, char** argv)
+{
+  benchmark::Initialize(&argc, argv);
+  Meshes().push_back({ "Sphere2M", phongvtk_bench::Sphere(1000) });
+  if (auto bunny = phongvtk_bench::CGALMesh("bunny00.off"))
+  {
+    Meshes().push_back({ "Bunny", bunny });
+  }
+
+  benchmark::RegisterBenchmark("MemoryCopy", MemoryCopy)->Unit(benchmark::kMillisecond);
+  for (const Mesh& mesh : Meshes())
+  {
+    vtkPolyData* data = mesh.Data;
+    auto reg = [&](const std::string& name, auto fn)
+    {
+      benchmark::RegisterBenchmark((mesh.Name + "/" + name).c_str(), fn)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+    };
+    reg("vtkPolyDataNormals.Cells", [data](benchmark::State& s) { PolyDataNormalsCells(s, data); });
+    reg(
+      "vtkPolyDataNormals.Points", [data](benchmark::State& s) { PolyDataNormalsPoints(s, data); });
+    reg("vtkTriangleMeshPointNormals",
+      [data](benchmark::State& s) { TriangleMeshPointNormals(s, data); });
+    for (int mode = vtkPolygonNormals::FAST; mode <= vtkPolygonNormals::EXACT; ++mode)
+    {
+      reg(std::string("PolygonNormals.Cells.") + ModeName(mode),
+        [data, mode](benchmark::State& s) { PolygonNormals(s, data, mode, false); });
+      reg(std::string("PolygonNormals.Points.") + ModeName(mode),
+        [data, mode](benchmark::State& s) { PolygonNormals(s, data, mode, true); });
+    }
+  }
+
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+
+  std::printf("\nSMP backend %s, %d threads. Ratios: anchor time / PhongVTK time (higher is "
+              "faster), medians when repeated.\n",
+    vtkSMPTools::GetBackend(), vtkSMPTools::GetEstimatedNumberOfThreads());
+  auto seconds = [&](const std::string& name)
+  {
+    auto it = reporter.Seconds.find(name);
+    return it == reporter.Seconds.end() ? 0.0 : it->second;
+  };
+  for (const Mesh& mesh : Meshes())
+  {
+    const std::string m = mesh.Name + "/";
+    const double cellsAnchor = seconds(m + "vtkPolyDataNormals.Cells");
+    const double pointsAnchor = seconds(m + "vtkPolyDataNormals.Points");
+    const double triangleAnchor = seconds(m + "vtkTriangleMeshPointNormals");
+    const double floor =
+      reporter.Bandwidth > 0 ? CellNormalBytes(mesh.Data) / reporter.Bandwidth : 0.0;
+    std::printf("\n%s: %lld cells; vtkPolyDataNormals cells %.1f ms, points %.1f ms; "
+                "vtkTriangleMeshPointNormals %.1f ms; memory floor %.2f ms\n",
+      mesh.Name.c_str(), static_cast<long long>(mesh.Data->GetNumberOfCells()), 1e3 * cellsAnchor,
+      1e3 * pointsAnchor, 1e3 * triangleAnchor, 1e3 * floor);
+    std::printf("%-12s %10s %12s %10s | %10s %12s %14s\n", "mode", "cells ms", "vs PDN cells",
+      "x floor", "points ms", "vs PDN points", "vs TriMeshPN");
+    for (int mode = vtkPolygonNormals::FAST; mode <= vtkPolygonNormals::EXACT; ++mode)
+    {
+      const double cells = seconds(m + "PolygonNormals.Cells." + ModeName(mode));
+      const double points = seconds(m + "PolygonNormals.Points." + ModeName(mode));
+      if (cells <= 0 || points <= 0)
+      {
+        continue;
+      }
+      std::printf("%-12s %10.2f %11.1fx %9.2fx | %10.2f %12.1fx %13.1fx\n", ModeName(mode),
+        1e3 * cells, cellsAnchor / cells, floor > 0 ? cells / floor : 0.0, 1e3 * points,
+        pointsAnchor / points, triangleAnchor / points);
+    }
+  }
+  benchmark::Shutdown();
+  return 0;
+}

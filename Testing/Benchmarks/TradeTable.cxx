@@ -1,0 +1,193 @@
+// PhongVTKTradeTable: the main job. Computes the cell normals of real and hard inputs in every
+// accuracy mode of vtkPolygonNormals and prints what each mode costs (ns per polygon, median of
+// several runs) and what it buys (worst and median error against exact rational arithmetic, in
+// ulps of the output precision and in radians).
+//
+//   PhongVTKTradeTable [--mesh file.off] [--runs N] [--quick]
+#include "vtkPolygonNormals.h"
+
+#include "PhongVTKBenchmarkMeshes.h"
+#include "PhongVTKExactReference.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkPoints.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct InputClass
+{
+  std::string Name;
+  vtkSmartPointer<vtkPolyData> Mesh;
+};
+
+struct Reference
+{
+  std::vector<std::array<mpf_class, 3>> Normals;
+  std::vector<bool> Zero; // exact area vector is zero
+};
+
+Reference ComputeReference(vtkPolyData* mesh)
+{
+  Reference ref;
+  vtkCellArray* polys = mesh->GetPolys();
+  const vtkIdType n = polys->GetNumberOfCells();
+  ref.Normals.resize(n);
+  ref.Zero.resize(n);
+  vtkNew<vtkIdList> ids;
+  std::vector<phongvtk_test::Point> polygon;
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    polygon.resize(ids->GetNumberOfIds());
+    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i)
+    {
+      mesh->GetPoint(ids->GetId(i), polygon[i].data());
+    }
+    const auto w = phongvtk_test::ComputeExactAreaVector(polygon);
+    ref.Zero[c] = w.IsZero();
+    ref.Normals[c] = phongvtk_test::ReferenceNormal(w);
+  }
+  return ref;
+}
+
+const char* ModeName(int mode)
+{
+  static const char* names[] = { "FAST", "DOUBLE", "COMPENSATED", "EXACT" };
+  return names[mode];
+}
+
+double Median(std::vector<double> v)
+{
+  if (v.empty())
+  {
+    return 0.0;
+  }
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+void Row(const InputClass& input, const Reference& ref, int mode, int runs)
+{
+  vtkNew<vtkPolygonNormals> filter;
+  filter->SetInputData(input.Mesh);
+  filter->SetAccuracy(mode);
+  // FAST is a float mode: its errors are counted in float ulps; the others in double ulps.
+  const bool single = mode == vtkPolygonNormals::FAST;
+  filter->SetOutputPrecision(
+    single ? vtkAlgorithm::SINGLE_PRECISION : vtkAlgorithm::DOUBLE_PRECISION);
+  std::vector<double> times;
+  for (int r = 0; r < runs; ++r)
+  {
+    filter->Modified();
+    const auto start = std::chrono::steady_clock::now();
+    filter->Update();
+    times.push_back(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  vtkDataArray* normals = filter->GetOutput()->GetCellData()->GetNormals();
+  const vtkIdType n = static_cast<vtkIdType>(ref.Normals.size());
+  std::vector<double> ulps, angles;
+  ulps.reserve(n);
+  angles.reserve(n);
+  vtkIdType zeroMismatch = 0;
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    double v[3];
+    normals->GetTuple(c, v);
+    const bool isZero = v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0;
+    if (ref.Zero[c] || isZero)
+    {
+      zeroMismatch += (ref.Zero[c] != isZero);
+      continue;
+    }
+    ulps.push_back(single ? phongvtk_test::NormalUlpError<float>(v, ref.Normals[c])
+                          : phongvtk_test::NormalUlpError<double>(v, ref.Normals[c]));
+    angles.push_back(phongvtk_test::AngleError(v, ref.Normals[c]));
+  }
+  const double worstUlp = ulps.empty() ? 0.0 : *std::max_element(ulps.begin(), ulps.end());
+  const double worstAngle = angles.empty() ? 0.0 : *std::max_element(angles.begin(), angles.end());
+  std::printf("| %-22s | %-11s | %9.1f | %10.3g %-4s | %10.3g | %10.2e | %10.2e | %9lld |\n",
+    input.Name.c_str(), ModeName(mode), 1e9 * Median(times) / static_cast<double>(n), worstUlp,
+    single ? "(f)" : "(d)", Median(ulps), worstAngle, Median(angles),
+    static_cast<long long>(zeroMismatch));
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::string meshPath = phongvtk_bench::MeshPath("bunny00.off");
+  int runs = 7;
+  vtkIdType synthetic = 50000;
+  for (int i = 1; i < argc; ++i)
+  {
+    if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc)
+    {
+      meshPath = argv[++i];
+    }
+    else if (!std::strcmp(argv[i], "--runs") && i + 1 < argc)
+    {
+      runs = std::max(1, std::atoi(argv[++i]));
+    }
+    else if (!std::strcmp(argv[i], "--quick"))
+    {
+      runs = 1;
+      synthetic = 2000;
+    }
+    else
+    {
+      std::printf("usage: %s [--mesh file.off] [--runs N] [--quick]\n"
+                  "Prints the speed/accuracy trade of vtkPolygonNormals' accuracy modes.\n",
+        argv[0]);
+      return std::strcmp(argv[i], "--help") ? 2 : 0;
+    }
+  }
+  std::string error;
+  vtkSmartPointer<vtkPolyData> mesh = phongvtk_test::ReadOFF(meshPath, &error);
+  if (!mesh)
+  {
+    std::fprintf(
+      stderr, "PhongVTKTradeTable: cannot read %s: %s\n", meshPath.c_str(), error.c_str());
+    return 1;
+  }
+  const std::string base = meshPath.substr(meshPath.find_last_of('/') + 1);
+  std::vector<InputClass> inputs = {
+    { "ordinary: " + base, mesh },
+    { "far offset 1e12", phongvtk_bench::Transformed(mesh, 0, 1e12) },
+    { "needles, aspect 1e12", phongvtk_bench::Needles(synthetic) },
+    { "tiny scale 2^-1000", phongvtk_bench::Transformed(mesh, -1000, 0.0) },
+    { "huge scale 2^1000", phongvtk_bench::Transformed(mesh, 1000, 0.0) },
+    { "non-planar hexagons", phongvtk_bench::NonPlanar(synthetic) },
+  };
+  std::printf("vtkPolygonNormals speed/accuracy trade (%s: %lld polygons; SMP backend %s, %d "
+              "threads; time = median of %d runs)\n"
+              "Errors against exact rational arithmetic; ulps of the output precision "
+              "((f) float, (d) double), largest component.\n\n",
+    base.c_str(), static_cast<long long>(mesh->GetNumberOfPolys()), vtkSMPTools::GetBackend(),
+    vtkSMPTools::GetEstimatedNumberOfThreads(), runs);
+  std::printf("| %-22s | %-11s | %9s | %15s | %10s | %10s | %10s | %9s |\n", "input", "mode",
+    "ns/poly", "worst ulp", "median ulp", "worst rad", "median rad", "zero err");
+  std::printf("|%s|%s|%s|%s|%s|%s|%s|%s|\n", std::string(24, '-').c_str(),
+    std::string(13, '-').c_str(), std::string(11, '-').c_str(), std::string(17, '-').c_str(),
+    std::string(12, '-').c_str(), std::string(12, '-').c_str(), std::string(12, '-').c_str(),
+    std::string(11, '-').c_str());
+  for (const InputClass& input : inputs)
+  {
+    const Reference ref = ComputeReference(input.Mesh);
+    for (int mode = vtkPolygonNormals::FAST; mode <= vtkPolygonNormals::EXACT; ++mode)
+    {
+      Row(input, ref, mode, runs);
+    }
+  }
+  std::printf("\nzero err: polygons whose normal is zero while the exact area vector is not, or "
+              "the reverse.\n");
+  return 0;
+}
