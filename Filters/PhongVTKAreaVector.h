@@ -7,16 +7,24 @@
  * function mapping the polygon's vertex index to a point id. One loop skeleton (`AccumulateFan`)
  * serves every mode; the modes differ only in the arithmetic type plugged into it.
  *
- * Error bounds (u = 2^-53 for double, 2^-24 for float; T = number of fan triangles = n - 2;
- * P_c = sum of |products| entering component c, i.e. the condition of the component):
+ * Error bounds (u = 2^-53 for double, u_f = 2^-24 for float; T = number of fan triangles =
+ * n - 2; P_c = sum of |products| entering component c of w, the condition of that component):
  *
- * | mode        | area vector component c                  | unit normal                          |
- * |-------------|------------------------------------------|--------------------------------------|
- * | FAST        | (T + 3) u_f P_c (float arithmetic)       | + 3 u_f                              |
- * | DOUBLE      | (T + 3) u P_c                            | + 3 u                                |
- * | COMPENSATED | u |w_c| + (T + 65) u^2 P_c (first order)  | + 3 u (a few ulp unless P_c >
- * |w_c|/u) | | EXACT       | exact (certified double-double, or GMP)  | < 1 ulp per component
- * (faithful)     |
+ *   FAST         |error of w_c| <= (T + 3) u_f P_c;  unit normal: + 4.5 u_f per component.
+ *                Differences of double points are rounded to float: add 2 u P_c.
+ *   DOUBLE       |error of w_c| <= (T + 3) u P_c;  unit normal: + 3.5 u per component.
+ *   COMPENSATED  |error of w_c| <= u |w_c| + (T + 65) u^2 P_c to first order (the rounding of
+ *                the error accumulator can reach T (T + 4) u^2 P_c when partial sums grow
+ *                coherently; not observed); unit normal: + 3.5 u. A few ulp unless
+ *                P_c > |w_c| / u.
+ *   EXACT        exact area vector (certified double-double, else GMP integers); every component
+ *                of the unit normal within 1 ulp of w_c / |w| (faithful), zero exactly when the
+ *                exact w is zero.
+ *
+ * Underflow adds an absolute term to the inexact modes: a component below 2^-126 (float) or
+ * 2^-1022 (double) of the polygon's own size cannot be resolved by one exponent; such components
+ * carry up to 16 (T + 3) eta D^2 (eta = 2^-150 or 2^-1075, D the largest coordinate difference)
+ * while the direction stays exact to that level.
  *
  * Every mode is protected against overflow and underflow: when the direct evaluation leaves the
  * safe exponent window, the polygon is re-evaluated on differences scaled by an exact power of two.

@@ -18,6 +18,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -47,8 +48,8 @@ inline O Saturate(double x)
 
 /**
  * Where a pass over one of the input's cell arrays writes. Arrays the user did not ask for are
- * null. `FaceData` receives, per cell, what the point normals need: the area vector scaled by
- * 2^(-2 GlobalShift) for AREA weighting, the unit normal otherwise.
+ * null. `FaceData` receives, per cell, what the point normals need: for AREA weighting the area
+ * vector as FaceData * 2^FaceExponent, the unit normal otherwise.
  */
 template <class O>
 struct CellOutputs
@@ -58,8 +59,7 @@ struct CellOutputs
   O* Areas = nullptr;
   unsigned char* Status = nullptr;
   double* FaceData = nullptr;
-  bool FaceDataIsAreaVector = true;
-  int GlobalShift = 0;
+  int* FaceExponent = nullptr;
 };
 
 template <class O>
@@ -90,20 +90,14 @@ inline void WriteCell(const CellOutputs<O>& out, vtkIdType cell, const AreaVecto
   if (out.FaceData)
   {
     double* f = out.FaceData + 3 * cell;
-    if (!out.FaceDataIsAreaVector)
-    {
-      std::copy(r.Normal, r.Normal + 3, f);
-    }
-    else if (r.Exponent == 2 * out.GlobalShift)
+    if (out.FaceExponent)
     {
       std::copy(r.Vector, r.Vector + 3, f);
+      out.FaceExponent[cell] = r.Exponent;
     }
     else
     {
-      for (int c = 0; c < 3; ++c)
-      {
-        f[c] = std::ldexp(r.Vector[c], r.Exponent - 2 * out.GlobalShift);
-      }
+      std::copy(r.Normal, r.Normal + 3, f);
     }
   }
 }
@@ -171,108 +165,158 @@ struct AreaVectorWorker
   }
 };
 
-/// Largest finite coordinate magnitude: sets the common scale of the point normal sums.
-template <class T>
-double LargestFiniteCoordinate(const T* pts, vtkIdType n)
+/**
+ * A point normal sum with a binary exponent of its own: the value is S * 2^E. Contributions of
+ * any scale add without overflow or underflow; when every exponent is zero (faces of ordinary
+ * size) the additions are exactly those of a plain double sum.
+ */
+struct ScaledSum
 {
-  vtkSMPThreadLocal<T> local(T(0));
-  vtkSMPTools::For(0, n,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      T m = local.Local();
-      for (vtkIdType k = 3 * begin; k < 3 * end; ++k)
-      {
-        const T x = std::fabs(pts[k]);
-        // A select rather than a branch, so that the loop vectorises; NaN and Inf are skipped.
-        m = (x > m && x <= std::numeric_limits<T>::max()) ? x : m;
-      }
-      local.Local() = m;
-    });
-  double m = 0.0;
-  for (T v : local)
-  {
-    m = std::max(m, static_cast<double>(v));
-  }
-  return m;
-}
+  double S[3] = { 0.0, 0.0, 0.0 };
+  int E = 0;
 
-/// (x - y) * 2^-shift. When x - y overflows (coordinates near the top of the double range), the
-/// halves are subtracted instead: exact for such large coordinates.
-template <class T>
-inline double ScaledEdge(T x, T y, int shift)
-{
-  const double d = static_cast<double>(x) - static_cast<double>(y);
-  if (std::isinf(d))
+  void Add(const double v[3], int e)
   {
-    return std::ldexp(0.5 * static_cast<double>(x) - 0.5 * static_cast<double>(y), 1 - shift);
+    using phongvtk::detail::Scale2;
+    if (e != this->E)
+    {
+      if (this->S[0] == 0.0 && this->S[1] == 0.0 && this->S[2] == 0.0)
+      {
+        this->E = e;
+      }
+      else if (e > this->E)
+      {
+        const int d = std::max(this->E - e, -2200); // the old sum may vanish: it is negligible
+        for (double& x : this->S)
+        {
+          x = Scale2(Scale2(x, d / 2), d - d / 2);
+        }
+        this->E = e;
+      }
+      else
+      {
+        const int d = std::max(e - this->E, -2200);
+        for (int c = 0; c < 3; ++c)
+        {
+          this->S[c] += Scale2(Scale2(v[c], d / 2), d - d / 2);
+        }
+        this->Renormalize();
+        return;
+      }
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      this->S[c] += v[c];
+    }
+    this->Renormalize();
   }
-  return std::ldexp(d, -shift);
+
+  void Renormalize()
+  {
+    const double m = phongvtk::detail::MaxAbs3(this->S);
+    if (!(m <= 0x1p500) || (m < 0x1p-500 && m != 0.0))
+    {
+      if (!std::isfinite(m))
+      {
+        return;
+      }
+      const int k = phongvtk::detail::Exponent2(m);
+      for (double& x : this->S)
+      {
+        x = phongvtk::detail::Scale2(x, -k);
+      }
+      this->E += k;
+    }
+  }
+};
+
+/**
+ * The edge from v to q scaled by 2^-k so that its largest component lies in [1, 2); returns k,
+ * or INT_MIN for a zero edge. Coordinates whose difference overflows are halved first.
+ */
+template <class T>
+inline int ScaledEdge(const T* q, const T* v, double e[3])
+{
+  int extra = 0;
+  for (int c = 0; c < 3; ++c)
+  {
+    e[c] = static_cast<double>(q[c]) - static_cast<double>(v[c]);
+  }
+  if (!std::isfinite(phongvtk::detail::MaxAbs3(e)))
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      e[c] = 0.5 * static_cast<double>(q[c]) - 0.5 * static_cast<double>(v[c]);
+    }
+    extra = 1;
+  }
+  const double m = phongvtk::detail::MaxAbs3(e);
+  if (!(m > 0.0) || !std::isfinite(m))
+  {
+    return INT_MIN;
+  }
+  const int k = phongvtk::detail::Exponent2(m);
+  for (int c = 0; c < 3; ++c)
+  {
+    e[c] = phongvtk::detail::Scale2(e[c], -k);
+  }
+  return k + extra;
 }
 
 /**
- * Adds one face's contribution to the point normal sums of its corners. `vertex(i)` gives the
- * face's i-th point id; `face` is the face's FaceData entry (scaled area vector or unit normal).
+ * Adds one face's contribution to the point normal sums of its corners. `vertexId(i)` gives the
+ * face's i-th point id; the face's FaceData entry is `face * 2^exponent` (area vector for AREA,
+ * unit normal otherwise).
  */
 template <class T, class VertexIdFn>
-void ScatterFace(int weighting, const T* pts, int shift, const VertexIdFn& vertexId, std::int64_t n,
-  const double face[3], double* sums)
+void ScatterFace(int weighting, const T* pts, const VertexIdFn& vertexId, std::int64_t n,
+  const double face[3], int exponent, ScaledSum* sums)
 {
   if (weighting == vtkPolygonNormals::AREA || weighting == vtkPolygonNormals::UNIFORM)
   {
     for (std::int64_t i = 0; i < n; ++i)
     {
-      double* s = sums + 3 * vertexId(i);
-      s[0] += face[0];
-      s[1] += face[1];
-      s[2] += face[2];
+      sums[vertexId(i)].Add(face, exponent);
     }
     return;
   }
-  // ANGLE and MAX look at each corner: edges to the previous and next vertex, in coordinates
-  // scaled by 2^-shift so that squared lengths cannot overflow or underflow.
+  // ANGLE and MAX look at each corner: the edges to the previous and the next vertex, each
+  // scaled by its own power of two (the angle does not change; Max's weight scales back).
   for (std::int64_t i = 0; i < n; ++i)
   {
     const T* v = pts + 3 * vertexId(i);
-    const T* next = pts + 3 * vertexId((i + 1) % n);
-    const T* prev = pts + 3 * vertexId((i + n - 1) % n);
     double a[3], b[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      a[c] = ScaledEdge(prev[c], v[c], shift);
-      b[c] = ScaledEdge(next[c], v[c], shift);
-    }
-    const double x[3] = { b[1] * a[2] - b[2] * a[1], b[2] * a[0] - b[0] * a[2],
-      b[0] * a[1] - b[1] * a[0] };
-    const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
-    const double bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
-    if (!(aa > 0.0 && bb > 0.0 && std::isfinite(aa) && std::isfinite(bb)))
+    const int ka = ScaledEdge(pts + 3 * vertexId((i + n - 1) % n), v, a);
+    const int kb = ScaledEdge(pts + 3 * vertexId((i + 1) % n), v, b);
+    if (ka == INT_MIN || kb == INT_MIN)
     {
       continue; // a repeated vertex has no corner
     }
-    double* s = sums + 3 * vertexId(i);
+    const double x[3] = { b[1] * a[2] - b[2] * a[1], b[2] * a[0] - b[0] * a[2],
+      b[0] * a[1] - b[1] * a[0] };
     if (weighting == vtkPolygonNormals::ANGLE)
     {
       const double sine = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
       const double cosine = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
       const double angle = std::atan2(sine, cosine);
-      for (int c = 0; c < 3; ++c)
-      {
-        s[c] += angle * face[c];
-      }
+      const double weighted[3] = { angle * face[0], angle * face[1], angle * face[2] };
+      sums[vertexId(i)].Add(weighted, 0);
     }
     else
     {
+      // (b x a) / (|a|^2 |b|^2) with a = a' 2^ka, b = b' 2^kb is the same of a', b' times
+      // 2^-(ka + kb).
+      const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+      const double bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
       const double inv = 1.0 / (aa * bb);
-      for (int c = 0; c < 3; ++c)
-      {
-        s[c] += x[c] * inv;
-      }
+      const double weighted[3] = { x[0] * inv, x[1] * inv, x[2] * inv };
+      sums[vertexId(i)].Add(weighted, -(ka + kb));
     }
   }
 }
 
 template <class O>
-void NormalizeSums(const std::vector<double>& sums, O* normals, vtkIdType n)
+void NormalizeSums(const std::vector<ScaledSum>& sums, O* normals, vtkIdType n)
 {
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
@@ -282,7 +326,7 @@ void NormalizeSums(const std::vector<double>& sums, O* normals, vtkIdType n)
         double unit[3] = { 0.0, 0.0, 0.0 };
         double length;
         int k;
-        const double* s = sums.data() + 3 * p;
+        const double* s = sums[p].S;
         if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]))
         {
           phongvtk::detail::NormalizeDouble(s, unit, length, k);
@@ -324,6 +368,7 @@ public:
   vtkIdType NonFinite = 0;
   vtkIdType FirstBadCell = -1;
   std::vector<double> FaceData;
+  std::vector<int> FaceExponent;
 
   bool Run(O* pointNormals)
   {
@@ -336,11 +381,13 @@ public:
 
     if (this->PointNormals)
     {
-      const double m = LargestFiniteCoordinate(this->Points, this->NumberOfPoints);
-      this->Out.GlobalShift = (m >= 0x1p-200 && m <= 0x1p200) || m == 0.0 ? 0 : std::ilogb(m);
       this->FaceData.assign(static_cast<std::size_t>(3 * numCells), 0.0);
       this->Out.FaceData = this->FaceData.data();
-      this->Out.FaceDataIsAreaVector = this->Weighting == vtkPolygonNormals::AREA;
+      if (this->Weighting == vtkPolygonNormals::AREA)
+      {
+        this->FaceExponent.assign(static_cast<std::size_t>(numCells), 0);
+        this->Out.FaceExponent = this->FaceExponent.data();
+      }
     }
 
     // Vertices and lines are not surfaces; their point ids are checked all the same, since the
@@ -461,9 +508,8 @@ private:
   /// parallel normalisation.
   void ComputePointNormals(vtkIdType firstPoly, vtkIdType numPolys, O* pointNormals)
   {
-    std::vector<double> sums(static_cast<std::size_t>(3 * this->NumberOfPoints), 0.0);
+    std::vector<ScaledSum> sums(static_cast<std::size_t>(this->NumberOfPoints));
     const int weighting = this->Weighting;
-    const int shift = this->Out.GlobalShift;
     const T* pts = this->Points;
     vtkCellArray* polys = this->Input->GetPolys();
     if (numPolys > 0)
@@ -479,10 +525,11 @@ private:
               continue; // degenerate or flagged: no direction to contribute
             }
             const auto* ids = conn + offsets[cell];
+            const int exponent =
+              this->FaceExponent.empty() ? 0 : this->FaceExponent[firstPoly + cell];
             ScatterFace(
-              weighting, pts, shift,
-              [ids](std::int64_t i) { return static_cast<vtkIdType>(ids[i]); },
-              offsets[cell + 1] - offsets[cell], face, sums.data());
+              weighting, pts, [ids](std::int64_t i) { return static_cast<vtkIdType>(ids[i]); },
+              offsets[cell + 1] - offsets[cell], face, exponent, sums.data());
           }
         });
     }
@@ -496,10 +543,9 @@ private:
   }
 
   /// A strip contributes triangle by triangle, each with the strip's alternating orientation.
-  void ScatterStrips(vtkCellArray* strips, std::vector<double>& sums)
+  void ScatterStrips(vtkCellArray* strips, std::vector<ScaledSum>& sums)
   {
     const T* pts = this->Points;
-    const int shift = this->Out.GlobalShift;
     strips->Visit(RawCells{},
       [&](const auto* offsets, const auto* conn)
       {
@@ -535,16 +581,10 @@ private:
             {
               continue;
             }
-            double face[3];
-            for (int c = 0; c < 3; ++c)
-            {
-              face[c] = this->Weighting == vtkPolygonNormals::AREA
-                ? std::ldexp(r.Vector[c], r.Exponent - 2 * shift)
-                : r.Normal[c];
-            }
+            const bool area = this->Weighting == vtkPolygonNormals::AREA;
             ScatterFace(
-              this->Weighting, pts, shift, [&tri](std::int64_t i) { return tri[i]; }, 3, face,
-              sums.data());
+              this->Weighting, pts, [&tri](std::int64_t i) { return tri[i]; }, 3,
+              area ? r.Vector : r.Normal, area ? r.Exponent : 0, sums.data());
           }
         }
       });

@@ -1759,6 +1759,46 @@ TEST(PolygonNormalsPointNormals, PointsWithoutFacesGetZero)
   }
 }
 
+TEST(PolygonNormalsPointNormals, TinyFeaturesBesideLargeOnesKeepTheirDirection)
+{
+  // The corner shrunk by 2^-300 and 2^-600 next to an ordinary triangle at x = 10: every
+  // weighting is invariant under a uniform scaling of the corner, so point 0 must keep the
+  // corner's direction, whatever the scale of the rest of the mesh.
+  const std::pair<int, Vec3L> expected[] = { { vtkPolygonNormals::AREA, { -3, -1, -4 } },
+    { vtkPolygonNormals::UNIFORM, { -1, -1, -2 } }, { vtkPolygonNormals::ANGLE, { -1, -1, -1 } },
+    { vtkPolygonNormals::MAX, { -1, -3, -2 } } };
+  for (int exponent : { -300, -600, -1000 })
+  {
+    std::vector<Point> points = { { 0, 0, 0 }, { 0, 3, 0 }, { 0, 0, 2 }, { 1, 0, 0 }, { 2, 2, 0 } };
+    for (Point& p : points)
+    {
+      for (double& x : p)
+      {
+        x = std::ldexp(x, exponent);
+      }
+    }
+    points.push_back({ 10, 0, 0 });
+    points.push_back({ 11, 0, 0 });
+    points.push_back({ 10, 1, 0 });
+    Cells cells;
+    cells.Polys = { { 0, 2, 1 }, { 0, 3, 2 }, { 0, 1, 4 }, { 0, 4, 3 }, { 5, 6, 7 } };
+    auto mesh = MakePolyData(points, cells);
+    for (const auto& e : expected)
+    {
+      for (int mode : Modes)
+      {
+        if (mode == vtkPolygonNormals::FAST && exponent < -120)
+        {
+          continue; // float differences of 2^-600 coordinates are beyond FAST's promise
+        }
+        ExpectDirection(PointNormal(mesh, e.first, 0, mode), e.second,
+          std::string(WeightingName(e.first)) + " " + ModeName(mode) + " at 2^" +
+            std::to_string(exponent));
+      }
+    }
+  }
+}
+
 TEST(PolygonNormalsPointNormals, EveryWeightingAgreesWhereSymmetryDecides)
 {
   // Regular octahedron: at every vertex the four faces are congruent, so the normal is the
