@@ -63,7 +63,10 @@ enum NormalStatus : std::uint8_t
   StatusOk = 0,
   StatusDegenerate = 1,
   StatusNonFinite = 2,
-  StatusNotSurface = 3
+  StatusNotSurface = 3,
+  /// Internal: Vector (+ VectorLo) holds w, the normal is still to be computed (see
+  /// ComputeAreaVectorDeferred); never stored in an output.
+  StatusPending = 255
 };
 
 /**
@@ -74,7 +77,8 @@ struct AreaVector
 {
   double Normal[3];
   double Vector[3];
-  double Length; // |Vector|
+  double VectorLo[3]; // low parts of Vector while Status is StatusPending (EXACT only)
+  double Length;      // |Vector|
   int Exponent;
   std::uint8_t Status;
 
@@ -84,6 +88,7 @@ struct AreaVector
     {
       this->Normal[c] = 0.0;
       this->Vector[c] = 0.0;
+      this->VectorLo[c] = 0.0;
     }
     this->Length = 0.0;
     this->Exponent = 0;
@@ -341,6 +346,12 @@ PHONGVTK_INLINE void AccumulateFan(
   using Diff = typename Arith::Diff;
   const auto* p0 = vertex(0);
   Diff prev = Arith::template Difference<Scaled>(vertex(1), p0, scaling);
+  if (n == 3)
+  {
+    // Triangles, the common case, without a loop: the accumulator then stays in registers.
+    acc.Add(prev, Arith::template Difference<Scaled>(vertex(2), p0, scaling));
+    return;
+  }
   for (std::int64_t i = 2; i < n; ++i)
   {
     const Diff next = Arith::template Difference<Scaled>(vertex(i), p0, scaling);
@@ -397,17 +408,12 @@ struct FastArith
     const float m = MaxAbs3(this->W);
     if (m >= 0x1p-60f && m <= 0x1p60f)
     {
-      const float len =
-        std::sqrt(this->W[0] * this->W[0] + this->W[1] * this->W[1] + this->W[2] * this->W[2]);
-      const float inv = 1.0f / len;
       for (int c = 0; c < 3; ++c)
       {
-        out.Normal[c] = this->W[c] * inv;
         out.Vector[c] = this->W[c];
       }
-      out.Length = len;
       out.Exponent = 0;
-      out.Status = StatusOk;
+      out.Status = StatusPending;
       return true;
     }
     if (!mustSucceed)
@@ -416,6 +422,21 @@ struct FastArith
     }
     const double w[3] = { this->W[0], this->W[1], this->W[2] };
     return FinishDouble(w, out);
+  }
+
+  /// The normal of a pending result, in float arithmetic (Vector holds float values exactly).
+  static PHONGVTK_INLINE void Complete(AreaVector& out)
+  {
+    const float w[3] = { static_cast<float>(out.Vector[0]), static_cast<float>(out.Vector[1]),
+      static_cast<float>(out.Vector[2]) };
+    const float len = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    const float inv = 1.0f / len;
+    for (int c = 0; c < 3; ++c)
+    {
+      out.Normal[c] = w[c] * inv;
+    }
+    out.Length = len;
+    out.Status = StatusOk;
   }
 
   static bool FinishDouble(const double w[3], AreaVector& out)
@@ -472,20 +493,30 @@ struct DoubleArith
     return FinishVector(this->W, out, mustSucceed);
   }
 
+  /// The normal of a pending result (Vector inside the safe window).
+  static PHONGVTK_INLINE void Complete(AreaVector& out)
+  {
+    const double* w = out.Vector;
+    const double len = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    for (int c = 0; c < 3; ++c)
+    {
+      out.Normal[c] = w[c] / len;
+    }
+    out.Length = len;
+    out.Status = StatusOk;
+  }
+
   static PHONGVTK_INLINE bool FinishVector(const double w[3], AreaVector& out, bool mustSucceed)
   {
     const double m = MaxAbs3(w);
     if (m >= 0x1p-500 && m <= 0x1p500)
     {
-      const double len = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
       for (int c = 0; c < 3; ++c)
       {
-        out.Normal[c] = w[c] / len;
         out.Vector[c] = w[c];
       }
-      out.Length = len;
       out.Exponent = 0;
-      out.Status = StatusOk;
+      out.Status = StatusPending;
       return true;
     }
     if (!mustSucceed)
@@ -531,7 +562,6 @@ struct CompensatedArith
   V4 Err = {};          // every error term of the leading sum and of the products
   V4 Permanent = {};    // P_c, sum of |products| (only with TrackBound)
   V4 ErrMagnitude = {}; // M_c, sum of |terms added to Err| (only with TrackBound)
-  V4i Tiny = {};        // a non-zero difference below 2^-480: products may underflow to zero
 
   template <bool Scaled>
   static PHONGVTK_INLINE Diff Difference(const T* p, const T* p0, const Scaling& s)
@@ -578,9 +608,6 @@ struct CompensatedArith
     {
       this->Permanent += Abs(p1) + Abs(p2);
       this->ErrMagnitude += Abs(err);
-      const V4 small = { 0x1p-480, 0x1p-480, 0x1p-480, 0x1p-480 };
-      const V4 zero = {};
-      this->Tiny |= ((Abs(a.Hi) < small) & (a.Hi != zero)) | ((Abs(b.Hi) < small) & (b.Hi != zero));
     }
   }
 
@@ -595,8 +622,13 @@ struct CompensatedArith
   /**
    * EXACT filter: true when every component is certified to carry a relative error below 2^-56
    * (or is certified exactly zero), so that NormalizeFaithful returns a faithful normal.
+   * `hasTinyDifference()` is asked only when a component's products were all zero: a product
+   * that underflowed to zero would pass for an exact zero, so a non-zero difference below
+   * 2^-480 leaves the polygon to the exact fallback.
    */
-  PHONGVTK_INLINE bool FinishCertified(AreaVector& out, std::int64_t n) const
+  template <class TinyFn>
+  PHONGVTK_INLINE bool FinishCertified(
+    AreaVector& out, std::int64_t n, const TinyFn& hasTinyDifference) const
   {
     const double triangles = static_cast<double>(n - 1); // fan triangles + 1
     // Absolute slack for error terms lost to underflow (at most 2^-1074 per operation).
@@ -605,12 +637,6 @@ struct CompensatedArith
     TwoSum(this->S, this->Err, hi, lo);
     const V4 bound = 64.0 * 0x1p-106 * this->Permanent +
       (1.01 * triangles * 0x1p-53) * this->ErrMagnitude + 0x1p-53 * Abs(this->Err) + underflow;
-    // A product that underflowed to zero would pass for an exact zero: leave such polygons to
-    // the exact fallback.
-    if (this->Tiny[0] | this->Tiny[1] | this->Tiny[2])
-    {
-      return false;
-    }
     for (int c = 0; c < 3; ++c)
     {
       // Overflow risk or non-finite input (NaN fails every comparison).
@@ -624,22 +650,45 @@ struct CompensatedArith
         return false;
       }
     }
-    const DD w[3] = { { hi[0], lo[0] }, { hi[1], lo[1] }, { hi[2], lo[2] } };
-    int k;
-    double len;
-    if (!NormalizeFaithful(w, out.Normal, len, k))
+    if ((this->Permanent[0] == 0.0 || this->Permanent[1] == 0.0 || this->Permanent[2] == 0.0) &&
+      hasTinyDifference())
+    {
+      return false;
+    }
+    if (hi[0] == 0.0 && hi[1] == 0.0 && hi[2] == 0.0)
     {
       out.SetZero(StatusDegenerate); // certified: every product was exactly zero
       return true;
     }
     for (int c = 0; c < 3; ++c)
     {
+      out.Vector[c] = hi[c];
+      out.VectorLo[c] = lo[c];
+    }
+    out.Exponent = 0;
+    out.Status = StatusPending;
+    return true;
+  }
+
+  /// COMPENSATED: the normal of a pending result, in double.
+  static PHONGVTK_INLINE void Complete(AreaVector& out) { DoubleArith<T>::Complete(out); }
+
+  /// EXACT: the faithful normal of a pending certified double-double area vector.
+  static PHONGVTK_INLINE void CompleteFaithful(AreaVector& out)
+  {
+    const DD w[3] = { { out.Vector[0], out.VectorLo[0] }, { out.Vector[1], out.VectorLo[1] },
+      { out.Vector[2], out.VectorLo[2] } };
+    int k;
+    double len;
+    NormalizeFaithful(w, out.Normal, len, k);
+    for (int c = 0; c < 3; ++c)
+    {
       out.Vector[c] = k == 0 ? w[c].Hi + w[c].Lo : Scale2(w[c].Hi, -k) + Scale2(w[c].Lo, -k);
+      out.VectorLo[c] = 0.0;
     }
     out.Length = len;
-    out.Exponent = k;
+    out.Exponent += k;
     out.Status = StatusOk;
-    return true;
   }
 };
 
@@ -717,6 +766,26 @@ bool MeasureDifferences(const VertexFn& vertex, std::int64_t n, Scaling& scaling
   return true;
 }
 
+/// Whether a non-zero (scaled) coordinate difference to p0 lies below 2^-480.
+template <bool Scaled, class T, class VertexFn>
+bool HasTinyDifference(const VertexFn& vertex, std::int64_t n, const Scaling& scaling)
+{
+  const T* p0 = vertex(0);
+  for (std::int64_t i = 1; i < n; ++i)
+  {
+    const T* p = vertex(i);
+    for (int c = 0; c < 3; ++c)
+    {
+      const double d = std::fabs(ScaledDifference<Scaled>(p[c], p0[c], scaling));
+      if (d != 0.0 && d < 0x1p-480)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 /// Exact area vector in GMP integer arithmetic and its faithful normal
 /// (PhongVTKExactAreaVector.cxx).
 void ExactAreaVector(const double* xyz, std::int64_t n, AreaVector& out);
@@ -740,11 +809,31 @@ void ExactFallback(const VertexFn& vertex, std::int64_t n, AreaVector& out)
 } // namespace detail
 
 /**
- * Area vector, unit normal and status of one polygon with n vertices in accuracy mode A.
+ * Second half of ComputeAreaVector for a result left pending by ComputeAreaVectorDeferred: the
+ * unit normal and length (sqrt and division, whose latency dominates when done polygon by polygon;
+ * batching them lets the processor overlap many).
+ */
+template <Accuracy A, class T>
+PHONGVTK_INLINE void CompleteAreaVector(AreaVector& out)
+{
+  if constexpr (A == Accuracy::Exact)
+  {
+    detail::CompensatedArith<T, true>::CompleteFaithful(out);
+  }
+  else
+  {
+    detail::ArithFor<A, T>::Type::Complete(out);
+  }
+}
+
+/**
+ * Area vector and status of one polygon with n vertices in accuracy mode A, possibly without its
+ * normal yet: when out.Status is StatusPending, CompleteAreaVector<A, T>(out) finishes it.
  * `vertex(i)` returns a `const T*` to the coordinates of vertex i (i in [0, n)).
  */
 template <Accuracy A, class T, class VertexFn>
-PHONGVTK_INLINE void ComputeAreaVector(const VertexFn& vertex, std::int64_t n, AreaVector& out)
+PHONGVTK_INLINE void ComputeAreaVectorDeferred(
+  const VertexFn& vertex, std::int64_t n, AreaVector& out)
 {
   using Arith = typename detail::ArithFor<A, T>::Type;
   if (n < 3)
@@ -758,7 +847,8 @@ PHONGVTK_INLINE void ComputeAreaVector(const VertexFn& vertex, std::int64_t n, A
     detail::AccumulateFan<false>(acc, vertex, n, identity);
     if constexpr (A == Accuracy::Exact)
     {
-      if (acc.FinishCertified(out, n))
+      if (acc.FinishCertified(
+            out, n, [&] { return detail::HasTinyDifference<false, T>(vertex, n, identity); }))
       {
         return;
       }
@@ -790,21 +880,39 @@ PHONGVTK_INLINE void ComputeAreaVector(const VertexFn& vertex, std::int64_t n, A
     // Scaling the exact differences by a power of two keeps them exact, unless they overflowed
     // and the coordinates themselves had to be scaled down (Pre != 1): certify the scaled
     // polygon, or decide it in exact integer arithmetic.
-    if (scaling.Pre == 1.0 && acc.FinishCertified(out, n))
+    if (!(scaling.Pre == 1.0 &&
+          acc.FinishCertified(
+            out, n, [&] { return detail::HasTinyDifference<true, T>(vertex, n, scaling); })))
     {
-      out.Exponent += (out.Status == StatusOk) ? 2 * shift : 0;
+      detail::ExactFallback<T>(vertex, n, out);
       return;
     }
-    detail::ExactFallback<T>(vertex, n, out);
-    return;
   }
   else
   {
     acc.Finish(out, true);
-    if (out.Status == StatusOk)
-    {
-      out.Exponent += 2 * shift;
-    }
+  }
+  if (out.Status == StatusPending)
+  {
+    CompleteAreaVector<A, T>(out);
+  }
+  if (out.Status == StatusOk)
+  {
+    out.Exponent += 2 * shift;
+  }
+}
+
+/**
+ * Area vector, unit normal and status of one polygon with n vertices in accuracy mode A.
+ * `vertex(i)` returns a `const T*` to the coordinates of vertex i (i in [0, n)).
+ */
+template <Accuracy A, class T, class VertexFn>
+PHONGVTK_INLINE void ComputeAreaVector(const VertexFn& vertex, std::int64_t n, AreaVector& out)
+{
+  ComputeAreaVectorDeferred<A, T>(vertex, n, out);
+  if (out.Status == StatusPending)
+  {
+    CompleteAreaVector<A, T>(out);
   }
 }
 

@@ -159,6 +159,7 @@ void ExactAreaVector(const double* xyz, std::int64_t n, AreaVector& out)
   for (int c = 0; c < 3; ++c)
   {
     out.Vector[c] = Scale2(v[c].Hi, -k) + Scale2(v[c].Lo, -k);
+    out.VectorLo[c] = 0.0;
   }
   out.Length = len;
   out.Exponent = static_cast<int>(shift) + k + 2 * emin;

@@ -118,49 +118,69 @@ struct AreaVectorWorker
   CellOutputs<O> Out;
   vtkSMPThreadLocal<CellCounts>* Counts;
 
+  /// Cells are processed in batches: area vectors first, then every normal of the batch (the
+  /// square roots and divisions of independent cells then overlap), then the writes.
+  static constexpr vtkIdType Batch = 64;
+
   void operator()(vtkIdType begin, vtkIdType end) const
   {
     using UnsignedId = std::make_unsigned_t<Connectivity>;
     const auto numberOfPoints = static_cast<UnsignedId>(this->NumberOfPoints);
     CellCounts& counts = this->Counts->Local();
     const T* pts = this->Points;
-    for (vtkIdType cell = begin; cell < end; ++cell)
+    AreaVector results[Batch];
+    for (vtkIdType first = begin; first < end; first += Batch)
     {
-      const Connectivity* ids = this->CellConnectivity + this->CellOffsets[cell];
-      const std::int64_t n = this->CellOffsets[cell + 1] - this->CellOffsets[cell];
-      const vtkIdType outCell = this->FirstOutputCell + cell;
-      bool valid = true;
-      for (std::int64_t k = 0; k < n; ++k)
+      const vtkIdType count = std::min(Batch, end - first);
+      for (vtkIdType j = 0; j < count; ++j)
       {
-        valid &= static_cast<UnsignedId>(ids[k]) < numberOfPoints;
-      }
-      AreaVector r;
-      if (!valid)
-      {
-        if (counts.FirstBadCell < 0 || outCell < counts.FirstBadCell)
+        const vtkIdType cell = first + j;
+        const Connectivity* ids = this->CellConnectivity + this->CellOffsets[cell];
+        const std::int64_t n = this->CellOffsets[cell + 1] - this->CellOffsets[cell];
+        bool valid = true;
+        for (std::int64_t k = 0; k < n; ++k)
         {
-          counts.FirstBadCell = outCell;
+          valid &= static_cast<UnsignedId>(ids[k]) < numberOfPoints;
         }
-        r.SetZero(phongvtk::StatusDegenerate);
-      }
-      else if (!this->Strips)
-      {
-        auto vertex = [pts, ids](std::int64_t i)
+        AreaVector& r = results[j];
+        if (!valid)
         {
-          return pts + 3 * ids[i];
-        };
-        phongvtk::ComputeAreaVector<A, T>(vertex, n, r);
-      }
-      else
-      {
-        auto vertex = [pts, ids, n](std::int64_t i)
+          const vtkIdType outCell = this->FirstOutputCell + cell;
+          if (counts.FirstBadCell < 0 || outCell < counts.FirstBadCell)
+          {
+            counts.FirstBadCell = outCell;
+          }
+          r.SetZero(phongvtk::StatusDegenerate);
+        }
+        else if (!this->Strips)
         {
-          return pts + 3 * ids[phongvtk::StripOutlineIndex(i, n)];
-        };
-        phongvtk::ComputeAreaVector<A, T>(vertex, n, r);
+          auto vertex = [pts, ids](std::int64_t i)
+          {
+            return pts + 3 * ids[i];
+          };
+          phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, n, r);
+        }
+        else
+        {
+          auto vertex = [pts, ids, n](std::int64_t i)
+          {
+            return pts + 3 * ids[phongvtk::StripOutlineIndex(i, n)];
+          };
+          phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, n, r);
+        }
       }
-      counts.NonFinite += (r.Status == phongvtk::StatusNonFinite);
-      WriteCell(this->Out, outCell, r);
+      for (vtkIdType j = 0; j < count; ++j)
+      {
+        if (results[j].Status == phongvtk::StatusPending)
+        {
+          phongvtk::CompleteAreaVector<A, T>(results[j]);
+        }
+      }
+      for (vtkIdType j = 0; j < count; ++j)
+      {
+        counts.NonFinite += (results[j].Status == phongvtk::StatusNonFinite);
+        WriteCell(this->Out, this->FirstOutputCell + first + j, results[j]);
+      }
     }
   }
 };
