@@ -21,6 +21,7 @@
 #include <climits>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <type_traits>
 #include <vector>
 
@@ -195,38 +196,47 @@ struct ScaledSum
   double S[3] = { 0.0, 0.0, 0.0 };
   int E = 0;
 
-  void Add(const double v[3], int e)
+  PHONGVTK_INLINE void Add(const double v[3], int e)
   {
-    using phongvtk::detail::Scale2;
     if (e != this->E)
     {
-      if (this->S[0] == 0.0 && this->S[1] == 0.0 && this->S[2] == 0.0)
-      {
-        this->E = e;
-      }
-      else if (e > this->E)
-      {
-        const int d = std::max(this->E - e, -2200); // the old sum may vanish: it is negligible
-        for (double& x : this->S)
-        {
-          x = Scale2(Scale2(x, d / 2), d - d / 2);
-        }
-        this->E = e;
-      }
-      else
-      {
-        const int d = std::max(e - this->E, -2200);
-        for (int c = 0; c < 3; ++c)
-        {
-          this->S[c] += Scale2(Scale2(v[c], d / 2), d - d / 2);
-        }
-        this->Renormalize();
-        return;
-      }
+      this->AddScaled(v, e);
+      return;
     }
+    // Contributions lie below 2^500 and the sum is renormalised below 2^500 whenever exponents
+    // differ, so plain additions (the common case) cannot overflow.
     for (int c = 0; c < 3; ++c)
     {
       this->S[c] += v[c];
+    }
+  }
+
+  /// Adds v * 2^e when e differs from the sum's exponent: the smaller of the two is scaled to
+  /// the larger one's exponent (and may vanish: it is then negligible).
+  void AddScaled(const double v[3], int e)
+  {
+    using phongvtk::detail::Scale2;
+    if (this->S[0] == 0.0 && this->S[1] == 0.0 && this->S[2] == 0.0)
+    {
+      std::copy(v, v + 3, this->S);
+      this->E = e;
+    }
+    else if (e > this->E)
+    {
+      const int d = std::max(this->E - e, -2200);
+      for (int c = 0; c < 3; ++c)
+      {
+        this->S[c] = Scale2(Scale2(this->S[c], d / 2), d - d / 2) + v[c];
+      }
+      this->E = e;
+    }
+    else
+    {
+      const int d = std::max(e - this->E, -2200);
+      for (int c = 0; c < 3; ++c)
+      {
+        this->S[c] += Scale2(Scale2(v[c], d / 2), d - d / 2);
+      }
     }
     this->Renormalize();
   }
@@ -387,8 +397,8 @@ public:
   CellOutputs<O> Out;
   vtkIdType NonFinite = 0;
   vtkIdType FirstBadCell = -1;
-  std::vector<double> FaceData;
-  std::vector<int> FaceExponent;
+  std::unique_ptr<double[]> FaceData;
+  std::unique_ptr<int[]> FaceExponent;
 
   bool Run(O* pointNormals)
   {
@@ -401,12 +411,13 @@ public:
 
     if (this->PointNormals)
     {
-      this->FaceData.assign(static_cast<std::size_t>(3 * numCells), 0.0);
-      this->Out.FaceData = this->FaceData.data();
+      // Every cell writes its entry, so the buffers need no initialisation.
+      this->FaceData.reset(new double[3 * numCells]);
+      this->Out.FaceData = this->FaceData.get();
       if (this->Weighting == vtkPolygonNormals::AREA)
       {
-        this->FaceExponent.assign(static_cast<std::size_t>(numCells), 0);
-        this->Out.FaceExponent = this->FaceExponent.data();
+        this->FaceExponent.reset(new int[numCells]);
+        this->Out.FaceExponent = this->FaceExponent.get();
       }
     }
 
@@ -539,14 +550,13 @@ private:
         {
           for (vtkIdType cell = 0; cell < numPolys; ++cell)
           {
-            const double* face = this->FaceData.data() + 3 * (firstPoly + cell);
+            const double* face = this->FaceData.get() + 3 * (firstPoly + cell);
             if (face[0] == 0.0 && face[1] == 0.0 && face[2] == 0.0)
             {
               continue; // degenerate or flagged: no direction to contribute
             }
             const auto* ids = conn + offsets[cell];
-            const int exponent =
-              this->FaceExponent.empty() ? 0 : this->FaceExponent[firstPoly + cell];
+            const int exponent = this->FaceExponent ? this->FaceExponent[firstPoly + cell] : 0;
             ScatterFace(
               weighting, pts, [ids](std::int64_t i) { return static_cast<vtkIdType>(ids[i]); },
               offsets[cell + 1] - offsets[cell], face, exponent, sums.data());
