@@ -32,19 +32,15 @@ inline vtkSmartPointer<vtkPolyData> Sphere(int resolution)
   return sphere->GetOutput();
 }
 
-inline std::string MeshPath(const std::string& name)
-{
-  return std::string(PHONGVTK_CGAL_MESHES) + "/" + name;
-}
-
 /// A CGAL sample mesh (double points), or nullptr with a message on stderr.
 inline vtkSmartPointer<vtkPolyData> CGALMesh(const std::string& name)
 {
   std::string error;
-  auto mesh = phongvtk_test::ReadOFF(MeshPath(name), &error);
+  auto mesh = phongvtk_test::ReadOFF(phongvtk_test::CGALMeshPath(name), &error);
   if (!mesh)
   {
-    std::fprintf(stderr, "cannot read %s: %s\n", MeshPath(name).c_str(), error.c_str());
+    std::fprintf(
+      stderr, "cannot read %s: %s\n", phongvtk_test::CGALMeshPath(name).c_str(), error.c_str());
   }
   return mesh;
 }

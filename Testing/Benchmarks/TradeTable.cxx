@@ -124,7 +124,7 @@ void Row(const InputClass& input, const Reference& ref, int mode, int runs)
 
 int main(int argc, char** argv)
 {
-  std::string meshPath = phongvtk_bench::MeshPath("bunny00.off");
+  std::string meshPath = phongvtk_test::CGALMeshPath("bunny00.off");
   int runs = 7;
   vtkIdType synthetic = 50000;
   for (int i = 1; i < argc; ++i)

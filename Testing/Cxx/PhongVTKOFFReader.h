@@ -251,6 +251,30 @@ inline vtkSmartPointer<vtkPolyData> ReadOFF(const std::string& path, std::string
   mesh->SetPolys(polys);
   return mesh;
 }
+
+#ifdef PHONGVTK_CGAL_MESHES
+/// Path of one of CGAL's sample meshes (Debian's libcgal-demo, unpacked at configure time).
+inline std::string CGALMeshPath(const std::string& name)
+{
+  return std::string(PHONGVTK_CGAL_MESHES) + "/" + name;
+}
+
+inline bool HaveCGALMeshes()
+{
+  return std::ifstream(CGALMeshPath("bunny00.off")).good();
+}
+
+/// Skips the current GoogleTest test when the CGAL sample meshes are not there.
+#define PHONGVTK_SKIP_WITHOUT_CGAL_MESHES()                                                        \
+  do                                                                                               \
+  {                                                                                                \
+    if (!phongvtk_test::HaveCGALMeshes())                                                          \
+    {                                                                                              \
+      GTEST_SKIP() << "CGAL sample meshes not found in " PHONGVTK_CGAL_MESHES                      \
+                      " (install Debian's libcgal-demo and re-run CMake)";                         \
+    }                                                                                              \
+  } while (false)
+#endif
 } // namespace phongvtk_test
 
 #endif

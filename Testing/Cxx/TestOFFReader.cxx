@@ -19,26 +19,6 @@
 
 namespace
 {
-std::string MeshPath(const std::string& name)
-{
-  return std::string(PHONGVTK_CGAL_MESHES) + "/" + name;
-}
-
-bool HaveMeshes()
-{
-  return std::ifstream(MeshPath("cube_poly.off")).good();
-}
-
-#define SKIP_WITHOUT_MESHES()                                                                      \
-  do                                                                                               \
-  {                                                                                                \
-    if (!HaveMeshes())                                                                             \
-    {                                                                                              \
-      GTEST_SKIP() << "CGAL sample meshes not found in " PHONGVTK_CGAL_MESHES                      \
-                      " (install Debian's libcgal-demo and re-run CMake)";                         \
-    }                                                                                              \
-  } while (false)
-
 /// A file in the temporary directory holding `text`, removed at the end of the test. The name
 /// carries the test's name and the process id: CTest runs tests in parallel processes.
 class TextFile
@@ -89,9 +69,9 @@ void ExpectError(const std::string& text, const std::vector<std::string>& fragme
 
 TEST(OFFReader, ReadsPolygonsOfMixedSizesWithComments)
 {
-  SKIP_WITHOUT_MESHES();
+  PHONGVTK_SKIP_WITHOUT_CGAL_MESHES();
   std::string error;
-  auto mesh = phongvtk_test::ReadOFF(MeshPath("cube_poly.off"), &error);
+  auto mesh = phongvtk_test::ReadOFF(phongvtk_test::CGALMeshPath("cube_poly.off"), &error);
   ASSERT_NE(mesh, nullptr) << error;
   EXPECT_EQ(mesh->GetNumberOfPoints(), 8);
   EXPECT_EQ(mesh->GetNumberOfPolys(), 7);
@@ -105,9 +85,9 @@ TEST(OFFReader, ReadsPolygonsOfMixedSizesWithComments)
 
 TEST(OFFReader, ReadsLargeMesh)
 {
-  SKIP_WITHOUT_MESHES();
+  PHONGVTK_SKIP_WITHOUT_CGAL_MESHES();
   std::string error;
-  auto mesh = phongvtk_test::ReadOFF(MeshPath("bunny00.off"), &error);
+  auto mesh = phongvtk_test::ReadOFF(phongvtk_test::CGALMeshPath("bunny00.off"), &error);
   ASSERT_NE(mesh, nullptr) << error;
   EXPECT_EQ(mesh->GetNumberOfPoints(), 37706);
   EXPECT_EQ(mesh->GetNumberOfPolys(), 75408);
@@ -117,9 +97,9 @@ TEST(OFFReader, ReadsLargeMesh)
 
 TEST(OFFReader, ReadsColouredOFFWithCommentsBeforeTheHeader)
 {
-  SKIP_WITHOUT_MESHES();
+  PHONGVTK_SKIP_WITHOUT_CGAL_MESHES();
   std::string error;
-  auto mesh = phongvtk_test::ReadOFF(MeshPath("mesh_with_colors.off"), &error);
+  auto mesh = phongvtk_test::ReadOFF(phongvtk_test::CGALMeshPath("mesh_with_colors.off"), &error);
   ASSERT_NE(mesh, nullptr) << error;
   EXPECT_EQ(mesh->GetNumberOfPoints(), 8);
   EXPECT_EQ(mesh->GetNumberOfPolys(), 4);
@@ -130,9 +110,9 @@ TEST(OFFReader, ReadsColouredOFFWithCommentsBeforeTheHeader)
 
 TEST(OFFReader, ReadsCOFFWithVertexColours)
 {
-  SKIP_WITHOUT_MESHES();
+  PHONGVTK_SKIP_WITHOUT_CGAL_MESHES();
   std::string error;
-  auto mesh = phongvtk_test::ReadOFF(MeshPath("cactus.off"), &error);
+  auto mesh = phongvtk_test::ReadOFF(phongvtk_test::CGALMeshPath("cactus.off"), &error);
   ASSERT_NE(mesh, nullptr) << error;
   EXPECT_EQ(mesh->GetNumberOfPoints(), 620);
   EXPECT_EQ(mesh->GetNumberOfPolys(), 1236);

@@ -223,26 +223,6 @@ vtkSmartPointer<vtkPolyData> IntegerHeightField()
   return MakePolyData(points, cells);
 }
 
-std::string MeshPath(const std::string& name)
-{
-  return std::string(PHONGVTK_CGAL_MESHES) + "/" + name;
-}
-
-bool HaveCGALMeshes()
-{
-  return std::ifstream(MeshPath("bunny00.off")).good();
-}
-
-#define SKIP_WITHOUT_CGAL_MESHES()                                                                 \
-  do                                                                                               \
-  {                                                                                                \
-    if (!HaveCGALMeshes())                                                                         \
-    {                                                                                              \
-      GTEST_SKIP() << "CGAL sample meshes not found in " PHONGVTK_CGAL_MESHES                      \
-                      " (install Debian's libcgal-demo and re-run CMake)";                         \
-    }                                                                                              \
-  } while (false)
-
 //------------------------------------------------------------------------------
 // Running the filter and reading its output.
 
@@ -669,7 +649,7 @@ const MeshReference* CGALMesh(const std::string& name)
   }
   std::string error;
   MeshReference ref;
-  ref.Mesh = phongvtk_test::ReadOFF(MeshPath(name), &error);
+  ref.Mesh = phongvtk_test::ReadOFF(phongvtk_test::CGALMeshPath(name), &error);
   if (!ref.Mesh)
   {
     ADD_FAILURE() << error;
@@ -1363,7 +1343,7 @@ class PolygonNormalsRealMesh : public ::testing::TestWithParam<MeshMode>
 
 TEST_P(PolygonNormalsRealMesh, CellNormalsAgainstTheExactReference)
 {
-  SKIP_WITHOUT_CGAL_MESHES();
+  PHONGVTK_SKIP_WITHOUT_CGAL_MESHES();
   const MeshMode param = GetParam();
   const MeshReference* ref = CGALMesh(param.Mesh);
   ASSERT_NE(ref, nullptr);
@@ -1454,7 +1434,7 @@ int ExpectZeroExactlyWhenExactlyZero(const char* name, int mode)
 
 TEST(PolygonNormalsRealMeshes, ExactModeGivesZeroExactlyForZeroArea)
 {
-  SKIP_WITHOUT_CGAL_MESHES();
+  PHONGVTK_SKIP_WITHOUT_CGAL_MESHES();
   for (const char* mesh : { "bunny00.off", "fandisk.off", "cube_poly.off", "degtri_sliding.off" })
   {
     ExpectZeroExactlyWhenExactlyZero(mesh, vtkPolygonNormals::EXACT);
@@ -1464,7 +1444,7 @@ TEST(PolygonNormalsRealMeshes, ExactModeGivesZeroExactlyForZeroArea)
 TEST(PolygonNormalsRealMeshes, DegenerateTrianglesOfDegtriSlidingInEveryMode)
 {
   // Small integer coordinates: every mode computes these area vectors exactly.
-  SKIP_WITHOUT_CGAL_MESHES();
+  PHONGVTK_SKIP_WITHOUT_CGAL_MESHES();
   for (int mode : Modes)
   {
     EXPECT_EQ(ExpectZeroExactlyWhenExactlyZero("degtri_sliding.off", mode), 4)
@@ -1474,7 +1454,7 @@ TEST(PolygonNormalsRealMeshes, DegenerateTrianglesOfDegtriSlidingInEveryMode)
 
 TEST(PolygonNormalsRealMeshes, ExactFloatOutputIsWithinOneFloatUlp)
 {
-  SKIP_WITHOUT_CGAL_MESHES();
+  PHONGVTK_SKIP_WITHOUT_CGAL_MESHES();
   const MeshReference* ref = CGALMesh("fandisk.off");
   ASSERT_NE(ref, nullptr);
   auto out = RunFilter(ref->Mesh, [](vtkPolygonNormals* f) { f->SetAccuracyToExact(); });
@@ -1491,7 +1471,7 @@ TEST(PolygonNormalsRealMeshes, ExactFloatOutputIsWithinOneFloatUlp)
 
 TEST(PolygonNormalsRealMeshes, AreaPointNormalsOfTheBunny)
 {
-  SKIP_WITHOUT_CGAL_MESHES();
+  PHONGVTK_SKIP_WITHOUT_CGAL_MESHES();
   const MeshReference* ref = CGALMesh("bunny00.off");
   ASSERT_NE(ref, nullptr);
   const auto reference = ReferencePointNormals(ref->Mesh, vtkPolygonNormals::AREA);
