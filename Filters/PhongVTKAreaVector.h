@@ -637,18 +637,15 @@ struct CompensatedArith
     TwoSum(this->S, this->Err, hi, lo);
     const V4 bound = 64.0 * 0x1p-106 * this->Permanent +
       (1.01 * triangles * 0x1p-53) * this->ErrMagnitude + 0x1p-53 * Abs(this->Err) + underflow;
-    for (int c = 0; c < 3; ++c)
+    // Per component: no overflow risk and no non-finite input (NaN fails every comparison), and
+    // either every product was exactly zero (Permanent == 0) or the bound certifies 2^-56.
+    const V4 limit = { 0x1p900, 0x1p900, 0x1p900, 0x1p900 };
+    const V4 zero = {};
+    const V4i certified =
+      (this->Permanent <= limit) & ((this->Permanent == zero) | (bound <= 0x1p-56 * Abs(hi)));
+    if (!(certified[0] & certified[1] & certified[2]))
     {
-      // Overflow risk or non-finite input (NaN fails every comparison).
-      if (!(this->Permanent[c] <= 0x1p900))
-      {
-        return false;
-      }
-      // Permanent == 0: every product entering the component was exactly zero.
-      if (this->Permanent[c] != 0.0 && !(bound[c] <= 0x1p-56 * std::fabs(hi[c])))
-      {
-        return false;
-      }
+      return false;
     }
     if ((this->Permanent[0] == 0.0 || this->Permanent[1] == 0.0 || this->Permanent[2] == 0.0) &&
       hasTinyDifference())
