@@ -823,6 +823,118 @@ PHONGVTK_INLINE void CompleteAreaVector(AreaVector& out)
   }
 }
 
+namespace detail
+{
+/**
+ * CompleteFaithful for four pending EXACT results at once, one cell per SIMD lane: the same
+ * operations as NormalizeFaithful, so the results are bitwise the same; the square roots and
+ * divisions of four cells then cost what one costs. Results outside NormalizeFaithful's safe
+ * window are left to the scalar path.
+ */
+inline void CompleteFaithful4(AreaVector* r[4])
+{
+  V4 h[3], l[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    h[c] = V4{ r[0]->Vector[c], r[1]->Vector[c], r[2]->Vector[c], r[3]->Vector[c] };
+    l[c] = V4{ r[0]->VectorLo[c], r[1]->VectorLo[c], r[2]->VectorLo[c], r[3]->VectorLo[c] };
+  }
+  V4 p[3], e[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    TwoProduct(h[c], h[c], p[c], e[c]);
+    e[c] += 2.0 * h[c] * l[c];
+  }
+  V4 s1, t1, s2, t2;
+  TwoSum(p[0], p[1], s1, t1);
+  TwoSum(s1, p[2], s2, t2);
+  const V4 sLo0 = (t1 + t2) + (e[0] + e[1] + e[2]);
+  const V4 sHi = s2 + sLo0;
+  const V4 sLo = sLo0 - (sHi - s2);
+  V4 root;
+  for (int j = 0; j < 4; ++j)
+  {
+    root[j] = std::sqrt(sHi[j]);
+  }
+  const V4 inverse = 1.0 / root;
+  const V4 residual = Fma(-root, root, sHi) + sLo;
+  const V4 correction = 0.5 * residual * inverse;
+  const V4 normHi = root + correction;
+  const V4 normLo = correction - (normHi - root);
+  V4 n[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    const V4 q1 = h[c] * inverse;
+    const V4 rem = Fma(-q1, normHi, h[c]) + (l[c] - q1 * normLo);
+    n[c] = q1 + rem * inverse;
+  }
+  for (int j = 0; j < 4; ++j)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      r[j]->Normal[c] = n[c][j];
+      r[j]->Vector[c] = h[c][j] + l[c][j];
+      r[j]->VectorLo[c] = 0.0;
+    }
+    r[j]->Length = normHi[j];
+    r[j]->Status = StatusOk;
+  }
+}
+
+/// Whether a pending EXACT result lies inside NormalizeFaithful's unscaled window.
+inline bool InFaithfulWindow(const AreaVector& r)
+{
+  const double m = MaxAbs3(r.Vector);
+  return m >= 0x1p-500 && m <= 0x1p500;
+}
+} // namespace detail
+
+/**
+ * Completes every pending result of a batch (see ComputeAreaVectorDeferred): EXACT four cells
+ * at a time, the other modes cell by cell.
+ */
+template <Accuracy A, class T>
+void CompleteAreaVectors(AreaVector* results, std::int64_t count)
+{
+  if constexpr (A == Accuracy::Exact)
+  {
+    AreaVector* group[4];
+    int size = 0;
+    for (std::int64_t j = 0; j < count; ++j)
+    {
+      if (results[j].Status != StatusPending)
+      {
+        continue;
+      }
+      if (!detail::InFaithfulWindow(results[j]))
+      {
+        CompleteAreaVector<A, T>(results[j]);
+        continue;
+      }
+      group[size++] = results + j;
+      if (size == 4)
+      {
+        detail::CompleteFaithful4(group);
+        size = 0;
+      }
+    }
+    for (int j = 0; j < size; ++j)
+    {
+      CompleteAreaVector<A, T>(*group[j]);
+    }
+  }
+  else
+  {
+    for (std::int64_t j = 0; j < count; ++j)
+    {
+      if (results[j].Status == StatusPending)
+      {
+        CompleteAreaVector<A, T>(results[j]);
+      }
+    }
+  }
+}
+
 /**
  * Area vector and status of one polygon with n vertices in accuracy mode A, possibly without its
  * normal yet: when out.Status is StatusPending, CompleteAreaVector<A, T>(out) finishes it.

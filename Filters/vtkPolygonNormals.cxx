@@ -170,13 +170,7 @@ struct AreaVectorWorker
           phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, n, r);
         }
       }
-      for (vtkIdType j = 0; j < count; ++j)
-      {
-        if (results[j].Status == phongvtk::StatusPending)
-        {
-          phongvtk::CompleteAreaVector<A, T>(results[j]);
-        }
-      }
+      phongvtk::CompleteAreaVectors<A, T>(results, count);
       for (vtkIdType j = 0; j < count; ++j)
       {
         counts.NonFinite += (results[j].Status == phongvtk::StatusNonFinite);
