@@ -287,8 +287,11 @@ inline bool NormalizeFaithful(const DD w[3], double n[3], double& length, int& e
     return false;
   }
   // Squares of components in [2^-500, 2^500] neither overflow nor lose the low parts to
-  // underflow; outside that window the vector is first scaled by an exact power of two.
-  const int k = (m >= 0x1p-500 && m <= 0x1p500) ? 0 : Exponent2(m);
+  // underflow; outside that window the vector is first scaled by an exact power of two, to the
+  // top of the window: components down to 2^-1522 of the largest stay normal numbers. (Scaled
+  // to [1, 2), a component under 2^-1022 of the largest had its high and low parts rounded to
+  // subnormals separately and the quotient was off by more than 1 ulp.)
+  const int k = (m >= 0x1p-500 && m <= 0x1p500) ? 0 : Exponent2(m) - 499;
   DD v[3];
   for (int c = 0; c < 3; ++c)
   {
@@ -416,7 +419,9 @@ struct FastArith
       out.Status = StatusPending;
       return true;
     }
-    if (!mustSucceed)
+    // Large but finite: nothing underflowed that matters, the direct result only needs a scaled
+    // normalisation. Tiny, zero or non-finite: the caller re-evaluates on scaled differences.
+    if (!mustSucceed && !(m > 0x1p60f && m <= std::numeric_limits<float>::max()))
     {
       return false;
     }
@@ -519,7 +524,10 @@ struct DoubleArith
       out.Status = StatusPending;
       return true;
     }
-    if (!mustSucceed)
+    // Large but finite: the direct result only needs a scaled normalisation (re-evaluating on
+    // differences scaled down could flush small ones to zero). Tiny, zero or non-finite: the
+    // caller re-evaluates on scaled differences.
+    if (!mustSucceed && !(m > 0x1p500 && m <= std::numeric_limits<double>::max()))
     {
       return false;
     }
@@ -763,7 +771,8 @@ bool MeasureDifferences(const VertexFn& vertex, std::int64_t n, Scaling& scaling
   return true;
 }
 
-/// Whether a non-zero (scaled) coordinate difference to p0 lies below 2^-480.
+/// Whether a non-zero coordinate difference to p0 lies below 2^-480 once scaled. Scaling down can
+/// round a non-zero difference to zero, so non-zero means the coordinates differ.
 template <bool Scaled, class T, class VertexFn>
 bool HasTinyDifference(const VertexFn& vertex, std::int64_t n, const Scaling& scaling)
 {
@@ -774,7 +783,7 @@ bool HasTinyDifference(const VertexFn& vertex, std::int64_t n, const Scaling& sc
     for (int c = 0; c < 3; ++c)
     {
       const double d = std::fabs(ScaledDifference<Scaled>(p[c], p0[c], scaling));
-      if (d != 0.0 && d < 0x1p-480)
+      if (p[c] != p0[c] && d < 0x1p-480)
       {
         return true;
       }

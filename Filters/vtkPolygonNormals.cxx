@@ -157,7 +157,7 @@ struct AreaVectorWorker
         {
           auto vertex = [pts, ids](std::int64_t i)
           {
-            return pts + 3 * ids[i];
+            return pts + 3 * static_cast<std::int64_t>(ids[i]);
           };
           phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, n, r);
         }
@@ -165,7 +165,7 @@ struct AreaVectorWorker
         {
           auto vertex = [pts, ids, n](std::int64_t i)
           {
-            return pts + 3 * ids[phongvtk::StripOutlineIndex(i, n)];
+            return pts + 3 * static_cast<std::int64_t>(ids[phongvtk::StripOutlineIndex(i, n)]);
           };
           phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, n, r);
         }

@@ -1,23 +1,60 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages PhongVTK builds, tests and runs with. Idempotent and quick when
 # everything is already installed; uses sudo when not run as root.
+# PHONGVTK_FLAVOUR=paraview installs ParaView 5.11's SDK; PHONGVTK_FLAVOUR=vtk installs Debian's
+# plain VTK 9.1 instead (python3-vtk9 and python3-paraview conflict: one flavour a root). Unset:
+# the flavour already installed, ParaView on a machine that has neither.
 set -euo pipefail
+
+installed() {
+  dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"
+}
+if [ -z "${PHONGVTK_FLAVOUR:-}" ]; then
+  PHONGVTK_FLAVOUR=paraview
+  if installed python3-vtk9 && ! installed python3-paraview; then
+    PHONGVTK_FLAVOUR=vtk
+  fi
+fi
+
+case "$PHONGVTK_FLAVOUR" in
+  paraview)
+    # ParaView 5.11's SDK (VTK 9.2 inside) and the -dev packages its CMake config looks for
+    flavour=(paraview-dev python3-paraview python3-dev libopenmpi-dev libdouble-conversion-dev
+      libutfcpp-dev liblz4-dev liblzma-dev libexpat1-dev zlib1g-dev libpugixml-dev libjsoncpp-dev
+      libeigen3-dev)
+    other=python3-vtk9
+    ;;
+  vtk)
+    # VTK 9.1 (its -dev package depends on most of what its CMake config looks for)
+    flavour=(libvtk9-dev python3-vtk9 python3-dev)
+    other=python3-paraview
+    ;;
+  *)
+    echo "phongvtk: PHONGVTK_FLAVOUR must be paraview or vtk, not '$PHONGVTK_FLAVOUR'" >&2
+    exit 2
+    ;;
+esac
 
 packages=(
   # toolchain
   g++ cmake ninja-build clang-format
-  # ParaView 5.11's SDK (VTK 9.2 inside) and the -dev packages its CMake config looks for
-  paraview-dev python3-paraview python3-dev libopenmpi-dev libdouble-conversion-dev libutfcpp-dev
-  liblz4-dev liblzma-dev libexpat1-dev zlib1g-dev libpugixml-dev libjsoncpp-dev libeigen3-dev
+  "${flavour[@]}"
   # exact arithmetic (EXACT fallback, test reference), tests, benchmarks
   libgmp-dev libgtest-dev libbenchmark-dev python3-pytest python3-numpy
   # real meshes nobody here wrote (CGAL's sample data)
   libcgal-demo
 )
 
+# apt-get -y would remove the other flavour to make room; refuse instead.
+if installed "$other"; then
+  echo "phongvtk: $other (the other flavour) is installed;" \
+    "PHONGVTK_FLAVOUR=$PHONGVTK_FLAVOUR needs a machine or root without it" >&2
+  exit 2
+fi
+
 missing=()
 for p in "${packages[@]}"; do
-  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+  if ! installed "$p"; then
     missing+=("$p")
   fi
 done

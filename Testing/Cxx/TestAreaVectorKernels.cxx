@@ -1349,6 +1349,76 @@ TEST(AreaVectorExact, NormalComponentsInTheSubnormalRangeAreFaithful)
   ReportFamily(family, Accuracy::Exact);
 }
 
+TEST(AreaVectorExact, HugeAreaVectorsWithSubnormalNormalComponentsAreFaithful)
+{
+  // Certified area vectors beyond 2^500 whose x component is 2^-1022 .. 2^-1074 of the largest:
+  // the normalisation rescales them, and the x component of the normal is a subnormal number
+  // that must stay within one subnormal ulp (2^-1074) of the exact value.
+  const std::string family = "huge area vectors, subnormal normal components";
+  ExpectDocumentedBound(Accuracy::Exact,
+    Polygon<double>{ { -0x1.0248255611828p+905, 0x1.d621634cd70ep-118, 0x1.a23bc5797853cp-119 },
+      { -0x1.d3c5ab193bb43p+905, 0x1.1e4f4638c413p-108, -0x1.16ae47a6c854p-123 },
+      { 0x1.9573af15bd6ecp+905, 0x1.bc59b19b72784p-176, -0x1.4397f111191acp-244 },
+      { -0x1.59d263cdf0b3ep+905, -0x1.021d20971df6p-197, -0x1.2ecf900032c64p-204 },
+      { 0x1.f781d635bb8dcp+905, -0x1.d85f07c14cfa8p-127, 0x1.1c033a219bde4p-269 },
+      { 0x1.d3e69a8bc61e8p+905, 0x1.81214220483e8p-141, 0x1.c72493ea6b65p-168 } },
+    family);
+  Rng rng(22);
+  for (int k = 0; k < 3000; ++k)
+  {
+    Polygon<double> p = RandomPolygon(rng, 3 + k % 3);
+    const int x = std::uniform_int_distribution<int>(700, 1000)(rng);
+    const int y = std::uniform_int_distribution<int>(510 - x, 890 - x)(rng);
+    const int z = x - std::uniform_int_distribution<int>(1020, 1076)(rng);
+    for (auto& v : p)
+    {
+      v[0] = std::ldexp(v[0], x);
+      v[1] = std::ldexp(v[1], y);
+      v[2] = std::ldexp(v[2], z);
+    }
+    ExpectDocumentedBound(Accuracy::Exact, p, family);
+  }
+  ReportFamily(family, Accuracy::Exact);
+}
+
+TEST(AreaVectorExact, DifferencesThatTheSlowPathScalesToZeroAreNotLost)
+{
+  // Huge in x, tiny in y and z: the direct evaluation overflows its window, and the slow path's
+  // scaling (largest difference to [1, 2)) rounds the tiny differences to zero. Certifying the
+  // scaled sum would then call (0, 0, 2^920) degenerate, or drop the -2^-597 of the second
+  // triangle's normal.
+  const std::string family = "differences scaled below 2^-1075";
+  const Polygon<double> flat = { { 0, 0, 0 }, { 0x1p1000, 0, 0 }, { 0, 0x1p-80, 0 } };
+  ASSERT_FALSE(MakeTruth(flat).W.IsZero());
+  const AreaVector r = Compute(Accuracy::Exact, flat);
+  EXPECT_EQ(r.Status, phongvtk::StatusOk);
+  EXPECT_EQ(r.Normal[2], 1.0);
+  ExpectDocumentedBound(Accuracy::Exact, flat, family);
+  ExpectDocumentedBound(Accuracy::Exact,
+    Polygon<double>{ { 0, 0, 0 }, { 0x1p1000, 0x1p-76, 0 }, { 0x1p1000, 0, 0x1p521 } }, family);
+  Rng rng(21);
+  for (int k = 0; k < 1000; ++k)
+  {
+    Polygon<double> p = RandomPolygon(rng, 3 + k % 4);
+    const int big = std::uniform_int_distribution<int>(900, 1020)(rng);
+    for (auto& v : p)
+    {
+      v[0] = std::ldexp(v[0], big);
+      for (int c = 1; c < 3; ++c)
+      {
+        const int below = std::uniform_int_distribution<int>(1000, 1200)(rng);
+        v[c] = std::ldexp(v[c], big - below);
+      }
+    }
+    if (k % 5 == 0)
+    {
+      p[1][1] = p[0][1]; // the only differences in y are lost
+    }
+    ExpectDocumentedBound(Accuracy::Exact, p, family);
+  }
+  ReportFamily(family, Accuracy::Exact);
+}
+
 //------------------------------------------------------------------------------
 // 7. Non-finite coordinates.
 template <class T>
