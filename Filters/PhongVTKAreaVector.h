@@ -35,6 +35,7 @@
 #define PhongVTKAreaVector_h
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -331,11 +332,15 @@ inline bool NormalizeFaithful(const DD w[3], double n[3], double& length, int& e
 }
 
 //------------------------------------------------------------------------------
-/// Scaling applied to the differences on the slow path: d = ((p * Pre) - (p0 * Pre)) * 2^Shift.
+/// Scaling applied to the differences on the slow path: component c of a difference is
+/// ((p_c * Pre) - (p0_c * Pre)) * 2^Shift[c].
 struct Scaling
 {
   double Pre = 1.0;
-  int Shift = 0;
+  int Shift[3] = { 0, 0, 0 };
+
+  /// log2 of the factor that turns scaled differences of component c back into true ones.
+  int Unscale(int c) const { return -this->Shift[c] + (this->Pre != 1.0 ? 2 : 0); }
 };
 
 /**
@@ -364,14 +369,14 @@ PHONGVTK_INLINE void AccumulateFan(
 }
 
 template <bool Scaled, class T>
-PHONGVTK_INLINE double ScaledDifference(T a, T b, const Scaling& s)
+PHONGVTK_INLINE double ScaledDifference(T a, T b, const Scaling& s, int c)
 {
   if (!Scaled)
   {
     return static_cast<double>(a) - static_cast<double>(b);
   }
   const double d = static_cast<double>(a) * s.Pre - static_cast<double>(b) * s.Pre;
-  return Scale2(d, s.Shift);
+  return Scale2(d, s.Shift[c]);
 }
 
 //------------------------------------------------------------------------------
@@ -392,7 +397,7 @@ struct FastArith
     Diff d;
     for (int c = 0; c < 3; ++c)
     {
-      d.V[c] = Scaled ? static_cast<float>(ScaledDifference<true>(p[c], p0[c], s))
+      d.V[c] = Scaled ? static_cast<float>(ScaledDifference<true>(p[c], p0[c], s, c))
                       : static_cast<float>(p[c] - p0[c]);
     }
     return d;
@@ -403,6 +408,14 @@ struct FastArith
     this->W[0] += a.V[1] * b.V[2] - a.V[2] * b.V[1];
     this->W[1] += a.V[2] * b.V[0] - a.V[0] * b.V[2];
     this->W[2] += a.V[0] * b.V[1] - a.V[1] * b.V[0];
+  }
+
+  void Raw(double w[3]) const
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      w[c] = this->W[c];
+    }
   }
 
   /// Direct result if it is inside float's safe window, else false (caller rescales).
@@ -481,7 +494,7 @@ struct DoubleArith
     Diff d;
     for (int c = 0; c < 3; ++c)
     {
-      d.V[c] = ScaledDifference<Scaled>(p[c], p0[c], s);
+      d.V[c] = ScaledDifference<Scaled>(p[c], p0[c], s, c);
     }
     return d;
   }
@@ -497,6 +510,8 @@ struct DoubleArith
   {
     return FinishVector(this->W, out, mustSucceed);
   }
+
+  void Raw(double w[3]) const { std::copy(this->W, this->W + 3, w); }
 
   /// The normal of a pending result (Vector inside the safe window).
   static PHONGVTK_INLINE void Complete(AreaVector& out)
@@ -587,8 +602,8 @@ struct CompensatedArith
     {
       for (int c = 0; c < 3; ++c)
       {
-        d.Hi[c] = Scale2(d.Hi[c], s.Shift);
-        d.Lo[c] = Scale2(d.Lo[c], s.Shift);
+        d.Hi[c] = Scale2(d.Hi[c], s.Shift[c]);
+        d.Lo[c] = Scale2(d.Lo[c], s.Shift[c]);
       }
     }
     d.HiYZX = RotateYZX(d.Hi);
@@ -616,6 +631,15 @@ struct CompensatedArith
     {
       this->Permanent += Abs(p1) + Abs(p2);
       this->ErrMagnitude += Abs(err);
+    }
+  }
+
+  void Raw(double w[3]) const
+  {
+    const V4 sum = this->S + this->Err;
+    for (int c = 0; c < 3; ++c)
+    {
+      w[c] = sum[c];
     }
   }
 
@@ -721,11 +745,58 @@ struct ArithFor<Accuracy::Exact, T>
 };
 
 /**
+ * Result of the slow path of the inexact modes: component c of the true area vector is
+ * w[c] * 2^unscale[c]. The components are brought to a common exponent (the largest lands in
+ * [1, 2); components below 2^-1074 of it vanish, as they would in the unit normal) and
+ * normalised.
+ */
+inline void FinishScaled(const double w[3], const int unscale[3], AreaVector& out, bool single)
+{
+  int top = INT_MIN;
+  for (int c = 0; c < 3; ++c)
+  {
+    if (!std::isfinite(w[c]))
+    {
+      out.SetZero(StatusDegenerate);
+      return;
+    }
+    if (w[c] != 0.0)
+    {
+      top = std::max(top, Exponent2(w[c]) + unscale[c]);
+    }
+  }
+  if (top == INT_MIN)
+  {
+    out.SetZero(StatusDegenerate);
+    return;
+  }
+  double v[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    v[c] = w[c] == 0.0 ? 0.0 : std::ldexp(w[c], unscale[c] - top);
+  }
+  int k;
+  NormalizeDouble(v, out.Normal, out.Length, k);
+  for (int c = 0; c < 3; ++c)
+  {
+    out.Vector[c] = v[c];
+    out.VectorLo[c] = 0.0;
+    if (single)
+    {
+      out.Normal[c] = static_cast<float>(out.Normal[c]);
+    }
+  }
+  out.Exponent = top + k;
+  out.Status = StatusOk;
+}
+
+/**
  * Scale of the slow path: the largest coordinate difference and whether differences overflow.
  * Returns false when a coordinate is not finite.
  */
 template <class T, class VertexFn>
-bool MeasureDifferences(const VertexFn& vertex, std::int64_t n, Scaling& scaling, double& largest)
+bool MeasureDifferences(
+  const VertexFn& vertex, std::int64_t n, Scaling& scaling, double& largest, bool perAxis)
 {
   const T* p0 = vertex(0);
   for (int c = 0; c < 3; ++c)
@@ -735,7 +806,7 @@ bool MeasureDifferences(const VertexFn& vertex, std::int64_t n, Scaling& scaling
       return false;
     }
   }
-  double m = 0.0;
+  double m[3] = { 0.0, 0.0, 0.0 };
   bool overflow = false;
   for (std::int64_t i = 1; i < n; ++i)
   {
@@ -749,25 +820,29 @@ bool MeasureDifferences(const VertexFn& vertex, std::int64_t n, Scaling& scaling
       }
       const double d = std::fabs(x - static_cast<double>(p0[c]));
       overflow = overflow || std::isinf(d);
-      m = std::max(m, d);
+      m[c] = std::max(m[c], d);
     }
   }
   scaling.Pre = overflow ? 0.25 : 1.0;
   if (overflow)
   {
-    m = 0.0;
+    m[0] = m[1] = m[2] = 0.0;
     for (std::int64_t i = 1; i < n; ++i)
     {
       const T* p = vertex(i);
       for (int c = 0; c < 3; ++c)
       {
-        m = std::max(
-          m, std::fabs(static_cast<double>(p[c]) * 0.25 - static_cast<double>(p0[c]) * 0.25));
+        m[c] = std::max(
+          m[c], std::fabs(static_cast<double>(p[c]) * 0.25 - static_cast<double>(p0[c]) * 0.25));
       }
     }
   }
-  scaling.Shift = m > 0.0 ? -std::ilogb(m) : 0;
-  largest = m;
+  largest = std::max(m[0], std::max(m[1], m[2]));
+  for (int c = 0; c < 3; ++c)
+  {
+    const double scale = perAxis ? m[c] : largest;
+    scaling.Shift[c] = scale > 0.0 ? -std::ilogb(scale) : 0;
+  }
   return true;
 }
 
@@ -782,7 +857,7 @@ bool HasTinyDifference(const VertexFn& vertex, std::int64_t n, const Scaling& sc
     const T* p = vertex(i);
     for (int c = 0; c < 3; ++c)
     {
-      const double d = std::fabs(ScaledDifference<Scaled>(p[c], p0[c], scaling));
+      const double d = std::fabs(ScaledDifference<Scaled>(p[c], p0[c], scaling, c));
       if (p[c] != p0[c] && d < 0x1p-480)
       {
         return true;
@@ -977,9 +1052,12 @@ PHONGVTK_INLINE void ComputeAreaVectorDeferred(
     }
   }
   // Slow path: outside the safe exponent window, non-finite input, or (EXACT) not certified.
+  // EXACT scales every axis alike (its certificate and the exact fallback need the differences
+  // exact); the other modes scale each axis on its own, so that a polygon whose extent spans
+  // more binades than the arithmetic's exponent range (float's especially) loses nothing.
   detail::Scaling scaling;
   double largest;
-  if (!detail::MeasureDifferences<T>(vertex, n, scaling, largest))
+  if (!detail::MeasureDifferences<T>(vertex, n, scaling, largest, A != Accuracy::Exact))
   {
     out.SetZero(StatusNonFinite);
     return;
@@ -989,8 +1067,6 @@ PHONGVTK_INLINE void ComputeAreaVectorDeferred(
     out.SetZero(StatusDegenerate);
     return;
   }
-  // Undo the scaling of the differences: w scales with the square of the differences.
-  const int shift = -scaling.Shift + (scaling.Pre != 1.0 ? 2 : 0);
   Arith acc;
   detail::AccumulateFan<true>(acc, vertex, n, scaling);
   if constexpr (A == Accuracy::Exact)
@@ -1005,18 +1081,24 @@ PHONGVTK_INLINE void ComputeAreaVectorDeferred(
       detail::ExactFallback<T>(vertex, n, out);
       return;
     }
+    if (out.Status == StatusPending)
+    {
+      CompleteAreaVector<A, T>(out);
+    }
+    if (out.Status == StatusOk)
+    {
+      // w scales with the square of the (uniformly scaled) differences.
+      out.Exponent += 2 * scaling.Unscale(0);
+    }
   }
   else
   {
-    acc.Finish(out, true);
-  }
-  if (out.Status == StatusPending)
-  {
-    CompleteAreaVector<A, T>(out);
-  }
-  if (out.Status == StatusOk)
-  {
-    out.Exponent += 2 * shift;
+    // Component c of w is a sum of products of the other two axes' differences.
+    double w[3];
+    acc.Raw(w);
+    const int unscale[3] = { scaling.Unscale(1) + scaling.Unscale(2),
+      scaling.Unscale(2) + scaling.Unscale(0), scaling.Unscale(0) + scaling.Unscale(1) };
+    detail::FinishScaled(w, unscale, out, A == Accuracy::Fast);
   }
 }
 
