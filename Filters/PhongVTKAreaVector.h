@@ -27,7 +27,9 @@
  * while the direction stays exact to that level.
  *
  * Every mode is protected against overflow and underflow: when the direct evaluation leaves the
- * safe exponent window, the polygon is re-evaluated on differences scaled by an exact power of two.
+ * safe exponent window, the polygon is re-evaluated on differences scaled by exact powers of two
+ * (per axis for FAST, DOUBLE and COMPENSATED, so that extents spanning more binades than the
+ * arithmetic holds lose nothing; uniformly for EXACT, whose fallback is exact integer arithmetic).
  * Non-finite coordinates give status NonFinite and a zero normal; a zero area vector gives status
  * Degenerate and a zero normal (for EXACT: exactly when the exact area vector is zero).
  */
