@@ -159,7 +159,16 @@ struct AreaVectorWorker
           {
             return pts + 3 * static_cast<std::int64_t>(ids[i]);
           };
-          phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, n, r);
+          if (n == 3)
+          {
+            // A copy of the kernel specialised for triangles, the common case: with the vertex
+            // count known, the compiler keeps the whole evaluation in registers.
+            phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, 3, r);
+          }
+          else
+          {
+            phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, n, r);
+          }
         }
         else
         {
