@@ -520,9 +520,12 @@ struct DoubleArith
   {
     const double* w = out.Vector;
     const double len = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    // The three quotients in one SIMD division (the same correctly rounded IEEE quotients as
+    // three scalar divisions, at a third of their throughput cost).
+    const V4 n = V4{ w[0], w[1], w[2], 1.0 } / len;
     for (int c = 0; c < 3; ++c)
     {
-      out.Normal[c] = w[c] / len;
+      out.Normal[c] = n[c];
     }
     out.Length = len;
     out.Status = StatusOk;
