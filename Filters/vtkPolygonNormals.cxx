@@ -119,9 +119,12 @@ struct AreaVectorWorker
   CellOutputs<O> Out;
   vtkSMPThreadLocal<CellCounts>* Counts;
 
-  /// Cells are processed in batches: area vectors first, then every normal of the batch (the
-  /// square roots and divisions of independent cells then overlap), then the writes.
-  static constexpr vtkIdType Batch = 64;
+  /// EXACT processes cells in batches: area vectors first, then every faithful normal of the
+  /// batch (four per SIMD register, their square roots and divisions overlapping), then the
+  /// writes. The other modes' normals are cheap enough that the round trip through the batch
+  /// costs more than it saves (measured: DOUBLE 24.7 -> 20.0 ms on 2M triangles), so they go
+  /// cell by cell.
+  static constexpr vtkIdType Batch = A == Accuracy::Exact ? 64 : 1;
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
