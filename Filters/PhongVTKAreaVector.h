@@ -42,6 +42,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -914,20 +915,23 @@ PHONGVTK_INLINE void CompleteAreaVector(AreaVector& out)
 
 namespace detail
 {
-/**
- * CompleteFaithful for four pending EXACT results at once, one cell per SIMD lane: the same
- * operations as NormalizeFaithful, so the results are bitwise the same; the square roots and
- * divisions of four cells then cost what one costs. Results outside NormalizeFaithful's safe
- * window are left to the scalar path.
- */
-inline void CompleteFaithful4(AreaVector* r[4])
+/// Correctly rounded square root of each lane.
+PHONGVTK_INLINE V4 Sqrt(V4 v)
 {
-  V4 h[3], l[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    h[c] = V4{ r[0]->Vector[c], r[1]->Vector[c], r[2]->Vector[c], r[3]->Vector[c] };
-    l[c] = V4{ r[0]->VectorLo[c], r[1]->VectorLo[c], r[2]->VectorLo[c], r[3]->VectorLo[c] };
-  }
+#if defined(__AVX__)
+  return reinterpret_cast<V4>(_mm256_sqrt_pd(reinterpret_cast<__m256d>(v)));
+#else
+  return V4{ std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2]), std::sqrt(v[3]) };
+#endif
+}
+
+/**
+ * NormalizeFaithful of four double-double vectors h + l inside its unscaled window, one per SIMD
+ * lane: the same operations, so the results are bitwise the same; the square roots and divisions
+ * of four vectors then cost what one costs.
+ */
+PHONGVTK_INLINE void NormalizeFaithful4(const V4 h[3], const V4 l[3], V4 n[3], V4& length)
+{
   V4 p[3], e[3];
   for (int c = 0; c < 3; ++c)
   {
@@ -940,23 +944,31 @@ inline void CompleteFaithful4(AreaVector* r[4])
   const V4 sLo0 = (t1 + t2) + (e[0] + e[1] + e[2]);
   const V4 sHi = s2 + sLo0;
   const V4 sLo = sLo0 - (sHi - s2);
-  V4 root;
-  for (int j = 0; j < 4; ++j)
-  {
-    root[j] = std::sqrt(sHi[j]);
-  }
+  const V4 root = Sqrt(sHi);
   const V4 inverse = 1.0 / root;
   const V4 residual = Fma(-root, root, sHi) + sLo;
   const V4 correction = 0.5 * residual * inverse;
   const V4 normHi = root + correction;
   const V4 normLo = correction - (normHi - root);
-  V4 n[3];
   for (int c = 0; c < 3; ++c)
   {
     const V4 q1 = h[c] * inverse;
     const V4 rem = Fma(-q1, normHi, h[c]) + (l[c] - q1 * normLo);
     n[c] = q1 + rem * inverse;
   }
+  length = normHi;
+}
+
+/// CompleteFaithful for four pending EXACT results inside NormalizeFaithful's unscaled window.
+inline void CompleteFaithful4(AreaVector* r[4])
+{
+  V4 h[3], l[3], n[3], length;
+  for (int c = 0; c < 3; ++c)
+  {
+    h[c] = V4{ r[0]->Vector[c], r[1]->Vector[c], r[2]->Vector[c], r[3]->Vector[c] };
+    l[c] = V4{ r[0]->VectorLo[c], r[1]->VectorLo[c], r[2]->VectorLo[c], r[3]->VectorLo[c] };
+  }
+  NormalizeFaithful4(h, l, n, length);
   for (int j = 0; j < 4; ++j)
   {
     for (int c = 0; c < 3; ++c)
@@ -965,7 +977,7 @@ inline void CompleteFaithful4(AreaVector* r[4])
       r[j]->Vector[c] = h[c][j] + l[c][j];
       r[j]->VectorLo[c] = 0.0;
     }
-    r[j]->Length = normHi[j];
+    r[j]->Length = length[j];
     r[j]->Status = StatusOk;
   }
 }
@@ -1021,6 +1033,213 @@ void CompleteAreaVectors(AreaVector* results, std::int64_t count)
         CompleteAreaVector<A, T>(results[j]);
       }
     }
+  }
+}
+
+/**
+ * Four triangles at once, one per SIMD lane (structure of arrays): the direct evaluation of
+ * ComputeAreaVector for n = 3 with the same operations in the same order, hence bitwise the same
+ * results, for the runs of triangles most meshes consist of. The square roots and divisions of
+ * four triangles then cost what one costs. A lane whose triangle leaves the common case (outside
+ * the safe exponent window, non-finite, degenerate or, for EXACT, not certified) is not done: the
+ * caller gives that triangle to ComputeAreaVector.
+ */
+struct TriangleLanes
+{
+  detail::V4 Normal[3]; // unit normal, one component per register
+  detail::V4 Vector[3]; // area vector w (exponent 0)
+  detail::V4 Length;    // |w|
+  int Done;             // bit j set: lane j is complete with status Ok
+};
+
+namespace detail
+{
+typedef float V4f __attribute__((vector_size(16)));
+typedef int V4fi __attribute__((vector_size(16)));
+
+PHONGVTK_INLINE V4f Abs(V4f v)
+{
+  return reinterpret_cast<V4f>(reinterpret_cast<V4fi>(v) & 0x7fffffff); // clears the sign bit
+}
+
+/// Coordinate c of four points, one per lane, converted to the lane's element type.
+template <class Lane, class T>
+PHONGVTK_INLINE Lane GatherAxis(const T* const point[4], int c)
+{
+  using E = std::remove_cv_t<std::remove_reference_t<decltype(Lane{}[0])>>;
+  return Lane{ static_cast<E>(point[0][c]), static_cast<E>(point[1][c]),
+    static_cast<E>(point[2][c]), static_cast<E>(point[3][c]) };
+}
+
+/// Bit j set when lane j of a comparison result is true.
+template <class Mask>
+PHONGVTK_INLINE int LaneBits(Mask m)
+{
+  return static_cast<int>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8));
+}
+
+/// Lanes whose three components w_c are all at most `top` in magnitude (NaN is not) and not all
+/// below `bottom`: the safe window of the per-polygon kernel's MaxAbs3 test.
+template <class Lane>
+PHONGVTK_INLINE int InWindow(const Lane w[3], double bottom, double top)
+{
+  using E = std::remove_cv_t<std::remove_reference_t<decltype(Lane{}[0])>>;
+  const Lane a0 = Abs(w[0]), a1 = Abs(w[1]), a2 = Abs(w[2]);
+  const E lo = static_cast<E>(bottom), hi = static_cast<E>(top);
+  return LaneBits((a0 <= hi) & (a1 <= hi) & (a2 <= hi) & ((a0 >= lo) | (a1 >= lo) | (a2 >= lo)));
+}
+
+/// The cross product a x b component by component, added to zero as the fan's accumulator is.
+template <class Lane>
+PHONGVTK_INLINE void Cross4(const Lane a[3], const Lane b[3], Lane w[3])
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+    w[c] = Lane{} + (a[c1] * b[c2] - a[c2] * b[c1]);
+  }
+}
+
+/// DOUBLE's (and COMPENSATED's) completion of in-window area vectors: w / |w|.
+PHONGVTK_INLINE void NormalizeDouble4(const V4 w[3], TriangleLanes& out)
+{
+  out.Length = Sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+  for (int c = 0; c < 3; ++c)
+  {
+    out.Vector[c] = w[c];
+    out.Normal[c] = w[c] / out.Length;
+  }
+  out.Done = InWindow(w, 0x1p-500, 0x1p500);
+}
+
+template <class T>
+PHONGVTK_INLINE void FastTriangles4(const T* const corner[3][4], TriangleLanes& out)
+{
+  // Differences in the points' own precision, then float (FastArith::Difference).
+  using Point = std::conditional_t<std::is_same<T, float>::value, V4f, V4>;
+  V4f a[3], b[3], w[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    const Point p0 = GatherAxis<Point>(corner[0], c);
+    a[c] = __builtin_convertvector(GatherAxis<Point>(corner[1], c) - p0, V4f);
+    b[c] = __builtin_convertvector(GatherAxis<Point>(corner[2], c) - p0, V4f);
+  }
+  Cross4(a, b, w);
+  const V4f squares = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+#if defined(__SSE__)
+  const V4f length = reinterpret_cast<V4f>(_mm_sqrt_ps(reinterpret_cast<__m128>(squares)));
+#else
+  const V4f length = { std::sqrt(squares[0]), std::sqrt(squares[1]), std::sqrt(squares[2]),
+    std::sqrt(squares[3]) };
+#endif
+  const V4f inverse = 1.0f / length;
+  for (int c = 0; c < 3; ++c)
+  {
+    out.Vector[c] = __builtin_convertvector(w[c], V4);
+    out.Normal[c] = __builtin_convertvector(w[c] * inverse, V4);
+  }
+  out.Length = __builtin_convertvector(length, V4);
+  out.Done = InWindow(w, 0x1p-60, 0x1p60);
+}
+
+template <class T>
+PHONGVTK_INLINE void DoubleTriangles4(const T* const corner[3][4], TriangleLanes& out)
+{
+  V4 a[3], b[3], w[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    const V4 p0 = GatherAxis<V4>(corner[0], c);
+    a[c] = GatherAxis<V4>(corner[1], c) - p0;
+    b[c] = GatherAxis<V4>(corner[2], c) - p0;
+  }
+  Cross4(a, b, w);
+  NormalizeDouble4(w, out);
+}
+
+/// COMPENSATED and EXACT: CompensatedArith's Difference, Add and finish, lane by lane.
+template <class T, bool Exact>
+PHONGVTK_INLINE void CompensatedTriangles4(const T* const corner[3][4], TriangleLanes& out)
+{
+  V4 aHi[3], aLo[3], bHi[3], bLo[3];
+  V4i tiny = {}; // lanes with a non-zero difference below 2^-480 (HasTinyDifference)
+  for (int c = 0; c < 3; ++c)
+  {
+    const V4 p0 = GatherAxis<V4>(corner[0], c);
+    const V4 p1 = GatherAxis<V4>(corner[1], c);
+    const V4 p2 = GatherAxis<V4>(corner[2], c);
+    TwoSum(p1, -p0, aHi[c], aLo[c]);
+    TwoSum(p2, -p0, bHi[c], bLo[c]);
+    if (Exact)
+    {
+      tiny |= ((p1 != p0) & (Abs(aHi[c]) < 0x1p-480)) | ((p2 != p0) & (Abs(bHi[c]) < 0x1p-480));
+    }
+  }
+  V4 sum[3], err[3], permanent[3], errMagnitude[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+    V4 p1, e1, p2, e2, s, e, t, f;
+    TwoProduct(aHi[c1], bHi[c2], p1, e1);
+    TwoProduct(aHi[c2], bHi[c1], p2, e2);
+    TwoSum(p1, -p2, s, e);
+    TwoSum(V4{}, s, t, f);
+    sum[c] = t;
+    const V4 first = Fma(aHi[c1], bLo[c2], Fma(aLo[c1], bHi[c2], Fma(-aHi[c2], bLo[c1], -(aLo[c2] * bHi[c1]))));
+    const V4 termErr = (e + f) + ((e1 - e2) + first);
+    err[c] = V4{} + termErr;
+    permanent[c] = V4{} + (Abs(p1) + Abs(p2));
+    errMagnitude[c] = V4{} + Abs(termErr);
+  }
+  if (!Exact)
+  {
+    V4 w[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      w[c] = sum[c] + err[c];
+    }
+    NormalizeDouble4(w, out);
+    return;
+  }
+  // CompensatedArith::FinishCertified for n = 3, then NormalizeFaithful.
+  const double triangles = 2.0;
+  const double underflow = 32.0 * triangles * 0x1p-1074;
+  V4 hi[3], lo[3];
+  V4i certified = ~tiny;
+  for (int c = 0; c < 3; ++c)
+  {
+    TwoSum(sum[c], err[c], hi[c], lo[c]);
+    const V4 bound = 64.0 * 0x1p-106 * permanent[c] +
+      (1.01 * triangles * 0x1p-53) * errMagnitude[c] + 0x1p-53 * Abs(err[c]) + underflow;
+    // Lanes with an exactly zero component (every product zero) go to the per-polygon path.
+    certified &= (permanent[c] <= 0x1p900) & (permanent[c] != 0.0) & (bound <= 0x1p-56 * Abs(hi[c]));
+  }
+  NormalizeFaithful4(hi, lo, out.Normal, out.Length);
+  for (int c = 0; c < 3; ++c)
+  {
+    out.Vector[c] = hi[c] + lo[c];
+  }
+  out.Done = LaneBits(certified) & InWindow(hi, 0x1p-500, 0x1p500);
+}
+} // namespace detail
+
+/**
+ * Four triangles in accuracy mode A; `corner[v][j]` points at the coordinates of vertex v of
+ * triangle j.
+ */
+template <Accuracy A, class T>
+PHONGVTK_INLINE void ComputeTriangles4(const T* const corner[3][4], TriangleLanes& out)
+{
+  if constexpr (A == Accuracy::Fast)
+  {
+    detail::FastTriangles4<T>(corner, out);
+  }
+  else if constexpr (A == Accuracy::Double)
+  {
+    detail::DoubleTriangles4<T>(corner, out);
+  }
+  else
+  {
+    detail::CompensatedTriangles4<T, A == Accuracy::Exact>(corner, out);
   }
 }
 

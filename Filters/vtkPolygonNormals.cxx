@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <type_traits>
@@ -103,6 +104,21 @@ inline void WriteCell(const CellOutputs<O>& out, vtkIdType cell, const AreaVecto
   }
 }
 
+/// The unit normals of four cells (component by component, one cell per lane) as 12
+/// consecutive values x0 y0 z0 x1 ... z3.
+template <class O>
+PHONGVTK_INLINE void StoreNormals4(O* out, const phongvtk::detail::V4 n[3])
+{
+  using Vec = std::conditional_t<std::is_same<O, float>::value, phongvtk::detail::V4f,
+    phongvtk::detail::V4>;
+  const Vec x = __builtin_convertvector(n[0], Vec);
+  const Vec y = __builtin_convertvector(n[1], Vec);
+  const Vec z = __builtin_convertvector(n[2], Vec);
+  const Vec v[3] = { { x[0], y[0], z[0], x[1] }, { y[1], z[1], x[2], y[2] },
+    { z[2], x[3], y[3], z[3] } };
+  std::memcpy(out, v, sizeof(v));
+}
+
 /**
  * vtkSMPTools functor over a range of one cell array (polygons or strips): validates the point
  * ids, evaluates the area vector kernel and writes the requested outputs.
@@ -118,77 +134,148 @@ struct AreaVectorWorker
   vtkIdType FirstOutputCell;
   CellOutputs<O> Out;
   vtkSMPThreadLocal<CellCounts>* Counts;
+  bool NormalsOnly; // Out holds only Normals
 
-  /// EXACT processes cells in batches: area vectors first, then every faithful normal of the
-  /// batch (four per SIMD register, their square roots and divisions overlapping), then the
-  /// writes. The other modes' normals are cheap enough that the round trip through the batch
-  /// costs more than it saves (measured: DOUBLE 24.7 -> 20.0 ms on 2M triangles), so they go
-  /// cell by cell.
-  static constexpr vtkIdType Batch = A == Accuracy::Exact ? 64 : 1;
+  /// EXACT completes its pending cells in batches (four faithful normalisations per SIMD
+  /// register, their square roots and divisions overlapping). The other modes' normals are cheap
+  /// enough that the round trip through a batch costs more than it saves (measured: DOUBLE 24.7
+  /// -> 20.0 ms on 2M triangles): their batch holds only the leftovers of one group of triangles.
+  static constexpr vtkIdType Batch = A == Accuracy::Exact ? 64 : 4;
+  using UnsignedId = std::make_unsigned_t<Connectivity>;
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
-    using UnsignedId = std::make_unsigned_t<Connectivity>;
-    const auto numberOfPoints = static_cast<UnsignedId>(this->NumberOfPoints);
     CellCounts& counts = this->Counts->Local();
-    const T* pts = this->Points;
     AreaVector results[Batch];
-    for (vtkIdType first = begin; first < end; first += Batch)
+    vtkIdType cells[Batch];
+    vtkIdType pending = 0;
+    for (vtkIdType cell = begin; cell < end;)
     {
-      const vtkIdType count = std::min(Batch, end - first);
-      for (vtkIdType j = 0; j < count; ++j)
+      if (!this->Strips && cell + 4 <= end && this->AreFourTriangles(cell))
       {
-        const vtkIdType cell = first + j;
-        const Connectivity* ids = this->CellConnectivity + this->CellOffsets[cell];
-        const std::int64_t n = this->CellOffsets[cell + 1] - this->CellOffsets[cell];
-        bool valid = true;
-        for (std::int64_t k = 0; k < n; ++k)
+        // Runs of triangles go four at a time, one per SIMD lane; a triangle outside the
+        // common case takes the per-polygon path.
+        const T* corner[3][4];
+        for (int j = 0; j < 4; ++j)
         {
-          valid &= static_cast<UnsignedId>(ids[k]) < numberOfPoints;
-        }
-        AreaVector& r = results[j];
-        if (!valid)
-        {
-          const vtkIdType outCell = this->FirstOutputCell + cell;
-          if (counts.FirstBadCell < 0 || outCell < counts.FirstBadCell)
+          const Connectivity* ids = this->CellConnectivity + this->CellOffsets[cell + j];
+          for (int v = 0; v < 3; ++v)
           {
-            counts.FirstBadCell = outCell;
+            corner[v][j] = this->Points + 3 * static_cast<std::int64_t>(ids[v]);
           }
-          r.SetZero(phongvtk::StatusDegenerate);
         }
-        else if (!this->Strips)
+        phongvtk::TriangleLanes lanes;
+        phongvtk::ComputeTriangles4<A, T>(corner, lanes);
+        if (lanes.Done == 15 && this->NormalsOnly)
         {
-          auto vertex = [pts, ids](std::int64_t i)
+          StoreNormals4(this->Out.Normals + 3 * (this->FirstOutputCell + cell), lanes.Normal);
+          cell += 4;
+          continue;
+        }
+        for (int j = 0; j < 4; ++j)
+        {
+          if (lanes.Done & (1 << j))
           {
-            return pts + 3 * static_cast<std::int64_t>(ids[i]);
-          };
-          if (n == 3)
-          {
-            // A copy of the kernel specialised for triangles, the common case: with the vertex
-            // count known, the compiler keeps the whole evaluation in registers.
-            phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, 3, r);
+            this->WriteLane(lanes, j, cell + j);
           }
           else
           {
-            phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, n, r);
+            cells[pending] = cell + j;
+            this->ComputePolygon(cell + j, counts, results[pending++]);
           }
         }
-        else
-        {
-          auto vertex = [pts, ids, n](std::int64_t i)
-          {
-            return pts + 3 * static_cast<std::int64_t>(ids[phongvtk::StripOutlineIndex(i, n)]);
-          };
-          phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, n, r);
-        }
+        cell += 4;
       }
-      phongvtk::CompleteAreaVectors<A, T>(results, count);
-      for (vtkIdType j = 0; j < count; ++j)
+      else
       {
-        counts.NonFinite += (results[j].Status == phongvtk::StatusNonFinite);
-        WriteCell(this->Out, this->FirstOutputCell + first + j, results[j]);
+        cells[pending] = cell;
+        this->ComputePolygon(cell, counts, results[pending++]);
+        ++cell;
+      }
+      if (pending + 4 > Batch || cell >= end)
+      {
+        phongvtk::CompleteAreaVectors<A, T>(results, pending);
+        for (vtkIdType j = 0; j < pending; ++j)
+        {
+          counts.NonFinite += (results[j].Status == phongvtk::StatusNonFinite);
+          WriteCell(this->Out, this->FirstOutputCell + cells[j], results[j]);
+        }
+        pending = 0;
       }
     }
+  }
+
+  /// Whether cells cell ... cell + 3 are triangles with valid point ids.
+  bool AreFourTriangles(vtkIdType cell) const
+  {
+    const Offsets* o = this->CellOffsets + cell;
+    if (o[1] - o[0] != 3 || o[2] - o[1] != 3 || o[3] - o[2] != 3 || o[4] - o[3] != 3)
+    {
+      return false;
+    }
+    const Connectivity* ids = this->CellConnectivity + o[0];
+    const auto numberOfPoints = static_cast<UnsignedId>(this->NumberOfPoints);
+    bool valid = true;
+    for (int k = 0; k < 12; ++k)
+    {
+      valid &= static_cast<UnsignedId>(ids[k]) < numberOfPoints;
+    }
+    return valid;
+  }
+
+  /// The area vector of one cell, its normal possibly pending; an out-of-range point id is
+  /// recorded and the cell left degenerate.
+  void ComputePolygon(vtkIdType cell, CellCounts& counts, AreaVector& r) const
+  {
+    const Connectivity* ids = this->CellConnectivity + this->CellOffsets[cell];
+    const std::int64_t n = this->CellOffsets[cell + 1] - this->CellOffsets[cell];
+    const auto numberOfPoints = static_cast<UnsignedId>(this->NumberOfPoints);
+    bool valid = true;
+    for (std::int64_t k = 0; k < n; ++k)
+    {
+      valid &= static_cast<UnsignedId>(ids[k]) < numberOfPoints;
+    }
+    const T* pts = this->Points;
+    if (!valid)
+    {
+      const vtkIdType outCell = this->FirstOutputCell + cell;
+      if (counts.FirstBadCell < 0 || outCell < counts.FirstBadCell)
+      {
+        counts.FirstBadCell = outCell;
+      }
+      r.SetZero(phongvtk::StatusDegenerate);
+    }
+    else if (!this->Strips)
+    {
+      auto vertex = [pts, ids](std::int64_t i)
+      {
+        return pts + 3 * static_cast<std::int64_t>(ids[i]);
+      };
+      phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, n, r);
+    }
+    else
+    {
+      auto vertex = [pts, ids, n](std::int64_t i)
+      {
+        return pts + 3 * static_cast<std::int64_t>(ids[phongvtk::StripOutlineIndex(i, n)]);
+      };
+      phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, n, r);
+    }
+  }
+
+  /// Writes lane j of a completed group of triangles as the output cell of input cell `cell`.
+  PHONGVTK_INLINE void WriteLane(const phongvtk::TriangleLanes& lanes, int j, vtkIdType cell) const
+  {
+    AreaVector r;
+    for (int c = 0; c < 3; ++c)
+    {
+      r.Normal[c] = lanes.Normal[c][j];
+      r.Vector[c] = lanes.Vector[c][j];
+    }
+    r.Length = lanes.Length[j];
+    r.Exponent = 0;
+    r.Status = phongvtk::StatusOk;
+    WriteCell(this->Out, this->FirstOutputCell + cell, r);
   }
 };
 
@@ -529,7 +616,9 @@ private:
     bool strips, vtkSMPThreadLocal<CellCounts>& counts, vtkIdType numCells)
   {
     AreaVectorWorker<A, T, O, Off, Conn> worker{ this->Points, this->NumberOfPoints, offsets, conn,
-      strips, firstCell, this->Out, &counts };
+      strips, firstCell, this->Out, &counts,
+      this->Out.Normals && !this->Out.AreaVectors && !this->Out.Areas && !this->Out.Status &&
+        !this->Out.FaceData };
     const vtkIdType block = std::max<vtkIdType>(65536, (n + 9) / 10);
     for (vtkIdType begin = 0; begin < n && !this->Filter->GetAbortExecute(); begin += block)
     {
