@@ -1161,7 +1161,9 @@ template <class T, bool Exact>
 PHONGVTK_INLINE void CompensatedTriangles4(const T* const corner[3][4], TriangleLanes& out)
 {
   V4 aHi[3], aLo[3], bHi[3], bLo[3];
-  V4i tiny = {}; // lanes with a non-zero difference below 2^-480 (HasTinyDifference)
+  // Lanes with a non-zero difference below 2^-480 (HasTinyDifference): a product that underflowed
+  // to zero would pass for an exact zero. The per-polygon path decides them.
+  V4i tiny = {};
   for (int c = 0; c < 3; ++c)
   {
     const V4 p0 = GatherAxis<V4>(corner[0], c);
@@ -1184,7 +1186,8 @@ PHONGVTK_INLINE void CompensatedTriangles4(const T* const corner[3][4], Triangle
     TwoSum(p1, -p2, s, e);
     TwoSum(V4{}, s, t, f);
     sum[c] = t;
-    const V4 first = Fma(aHi[c1], bLo[c2], Fma(aLo[c1], bHi[c2], Fma(-aHi[c2], bLo[c1], -(aLo[c2] * bHi[c1]))));
+    const V4 first =
+      Fma(aHi[c1], bLo[c2], Fma(aLo[c1], bHi[c2], Fma(-aHi[c2], bLo[c1], -(aLo[c2] * bHi[c1]))));
     const V4 termErr = (e + f) + ((e1 - e2) + first);
     err[c] = V4{} + termErr;
     permanent[c] = V4{} + (Abs(p1) + Abs(p2));
@@ -1210,8 +1213,8 @@ PHONGVTK_INLINE void CompensatedTriangles4(const T* const corner[3][4], Triangle
     TwoSum(sum[c], err[c], hi[c], lo[c]);
     const V4 bound = 64.0 * 0x1p-106 * permanent[c] +
       (1.01 * triangles * 0x1p-53) * errMagnitude[c] + 0x1p-53 * Abs(err[c]) + underflow;
-    // Lanes with an exactly zero component (every product zero) go to the per-polygon path.
-    certified &= (permanent[c] <= 0x1p900) & (permanent[c] != 0.0) & (bound <= 0x1p-56 * Abs(hi[c]));
+    certified &=
+      (permanent[c] <= 0x1p900) & ((permanent[c] == 0.0) | (bound <= 0x1p-56 * Abs(hi[c])));
   }
   NormalizeFaithful4(hi, lo, out.Normal, out.Length);
   for (int c = 0; c < 3; ++c)

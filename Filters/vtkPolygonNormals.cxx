@@ -109,8 +109,8 @@ inline void WriteCell(const CellOutputs<O>& out, vtkIdType cell, const AreaVecto
 template <class O>
 PHONGVTK_INLINE void StoreNormals4(O* out, const phongvtk::detail::V4 n[3])
 {
-  using Vec = std::conditional_t<std::is_same<O, float>::value, phongvtk::detail::V4f,
-    phongvtk::detail::V4>;
+  using Vec =
+    std::conditional_t<std::is_same<O, float>::value, phongvtk::detail::V4f, phongvtk::detail::V4>;
   const Vec x = __builtin_convertvector(n[0], Vec);
   const Vec y = __builtin_convertvector(n[1], Vec);
   const Vec z = __builtin_convertvector(n[2], Vec);

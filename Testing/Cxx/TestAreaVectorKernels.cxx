@@ -41,6 +41,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <random>
@@ -84,13 +85,84 @@ double UnitRoundoff(Accuracy mode)
 }
 
 //------------------------------------------------------------------------------
-// The kernel under test.
+// The kernels under test: ComputeAreaVector for every polygon and, for triangles, also the
+// four-lane ComputeTriangles4 the filter uses for runs of triangles. A triangle goes into a
+// different lane at each call, beside ordinary triangles; when its lane is done, the lane's
+// result is the one checked, and it must equal the per-polygon result bit for bit (the filter's
+// grouping into lanes depends on the thread's range, and the output must not).
+
+/// Ordinary triangles that fill the other three lanes.
+template <class T>
+const T* Filler(int vertex, int lane)
+{
+  static const T corners[4][3][3] = { { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } },
+    { { 1, 2, 3 }, { -2, 1, 0.5 }, { 0.25, -1, 2 } }, { { 5, 5, 5 }, { 6, 5, 5 }, { 5, 5, 7 } },
+    { { -1, -1, -1 }, { 3, 1, 2 }, { 1, 3, -2 } } };
+  return corners[lane][vertex];
+}
+
+/// Which lanes came out done, over all calls (the fast path must really be taken).
+struct LaneUse
+{
+  long Triangles = 0;
+  long Done = 0;
+};
+
+LaneUse& LaneCounts()
+{
+  static LaneUse use;
+  return use;
+}
+
 template <Accuracy A, class T>
 void ComputeIn(const Polygon<T>& polygon, AreaVector& out)
 {
   phongvtk::ComputeAreaVector<A, T>([&polygon](std::int64_t i)
     { return polygon[static_cast<std::size_t>(i)].data(); },
     static_cast<std::int64_t>(polygon.size()), out);
+  if (polygon.size() != 3)
+  {
+    return;
+  }
+  static int lane = 0;
+  lane = (lane + 1) % 4;
+  const T* corner[3][4];
+  for (int v = 0; v < 3; ++v)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      corner[v][j] = j == lane ? polygon[static_cast<std::size_t>(v)].data() : Filler<T>(v, j);
+    }
+  }
+  phongvtk::TriangleLanes lanes;
+  phongvtk::ComputeTriangles4<A, T>(corner, lanes);
+  ++LaneCounts().Triangles;
+  if (!(lanes.Done & (1 << lane)))
+  {
+    return;
+  }
+  ++LaneCounts().Done;
+  AreaVector r;
+  for (int c = 0; c < 3; ++c)
+  {
+    r.Normal[c] = lanes.Normal[c][lane];
+    r.Vector[c] = lanes.Vector[c][lane];
+  }
+  r.Length = lanes.Length[lane];
+  r.Exponent = 0;
+  r.Status = phongvtk::StatusOk;
+  const bool same = std::memcmp(r.Normal, out.Normal, sizeof(r.Normal)) == 0 &&
+    std::memcmp(r.Vector, out.Vector, sizeof(r.Vector)) == 0 &&
+    std::memcmp(&r.Length, &out.Length, sizeof(r.Length)) == 0 && out.Exponent == 0 &&
+    out.Status == phongvtk::StatusOk;
+  if (!same)
+  {
+    ADD_FAILURE() << "lane " << lane << " differs from the per-polygon kernel: normal ("
+                  << r.Normal[0] << ", " << r.Normal[1] << ", " << r.Normal[2] << ") vs ("
+                  << out.Normal[0] << ", " << out.Normal[1] << ", " << out.Normal[2] << "), status "
+                  << int(out.Status);
+  }
+  out = r;
 }
 
 template <class T>
@@ -815,6 +887,83 @@ TEST_P(AreaVectorKernel, RandomTrianglesMeetTheDocumentedBound)
     ExpectDocumentedBound(GetParam(), RandomPolygon(rng, 3), "random triangles");
   }
   ReportFamily("random triangles", GetParam());
+}
+
+TEST_P(AreaVectorKernel, OrdinaryTrianglesAreCompletedFourPerSimdRegister)
+{
+  // Triangles of ordinary size, scale and offset are all completed by the four-lane kernel (the
+  // filter's fast path), within the documented bound and bitwise as the per-polygon kernel
+  // (ComputeIn checks both).
+  Rng rng(31);
+  const LaneUse before = LaneCounts();
+  for (int k = 0; k < 2000; ++k)
+  {
+    const Point offset = { Uniform(rng, -1e3, 1e3), Uniform(rng, -1e3, 1e3), 0.0 };
+    const int exponent = std::uniform_int_distribution<int>(-20, 20)(rng);
+    const Polygon<double> p = Scaled(RandomPolygon(rng, 3, 1.0, offset), exponent);
+    ExpectDocumentedBound(GetParam(), p, "lanes: ordinary triangles");
+    ExpectDocumentedBound(GetParam(), ToFloat(p), "lanes: ordinary float triangles");
+  }
+  EXPECT_EQ(LaneCounts().Done - before.Done, LaneCounts().Triangles - before.Triangles);
+  ReportFamily("lanes: ordinary triangles", GetParam());
+  ReportFamily("lanes: ordinary float triangles", GetParam());
+}
+
+template <class T>
+int DoneLanes(Accuracy mode, const T* const corner[3][4])
+{
+  phongvtk::TriangleLanes lanes;
+  switch (mode)
+  {
+    case Accuracy::Fast:
+      phongvtk::ComputeTriangles4<Accuracy::Fast, T>(corner, lanes);
+      break;
+    case Accuracy::Double:
+      phongvtk::ComputeTriangles4<Accuracy::Double, T>(corner, lanes);
+      break;
+    case Accuracy::Compensated:
+      phongvtk::ComputeTriangles4<Accuracy::Compensated, T>(corner, lanes);
+      break;
+    case Accuracy::Exact:
+      phongvtk::ComputeTriangles4<Accuracy::Exact, T>(corner, lanes);
+      break;
+  }
+  return lanes.Done;
+}
+
+TEST_P(AreaVectorKernel, TrianglesOutsideTheCommonCaseLeaveTheirLaneToThePerPolygonKernel)
+{
+  // Degenerate, non-finite, tiny and huge triangles are not completed in their lane, whichever
+  // it is, while the ordinary triangles beside them are.
+  const Polygon<double> unit = { { { 0, 0, 0 } }, { { 1, 0, 0 } }, { { 0, 1, 0 } } };
+  const std::vector<std::pair<std::string, Polygon<double>>> cases = {
+    { "collinear", { { { 0, 0, 0 } }, { { 1, 1, 1 } }, { { 2, 2, 2 } } } },
+    { "repeated vertex", { { { 1, 2, 3 } }, { { 1, 2, 3 } }, { { 0, 1, 0 } } } },
+    { "NaN", { { { 0, 0, 0 } }, { { NaN, 0, 0 } }, { { 0, 1, 0 } } } },
+    { "Inf", { { { 0, 0, Inf } }, { { 1, 0, 0 } }, { { 0, 1, 0 } } } },
+    { "scale 2^-1000", Scaled(unit, -1000) },
+    { "scale 2^1000", Scaled(unit, 1000) },
+  };
+  for (const auto& c : cases)
+  {
+    const Polygon<float> f = ToFloat(c.second);
+    for (int lane = 0; lane < 4; ++lane)
+    {
+      const double* corner[3][4];
+      const float* cornerF[3][4];
+      for (int v = 0; v < 3; ++v)
+      {
+        for (int j = 0; j < 4; ++j)
+        {
+          corner[v][j] = j == lane ? c.second[v].data() : Filler<double>(v, j);
+          cornerF[v][j] = j == lane ? f[v].data() : Filler<float>(v, j);
+        }
+      }
+      EXPECT_EQ(DoneLanes(GetParam(), corner), 15 & ~(1 << lane)) << c.first << ", lane " << lane;
+      EXPECT_EQ(DoneLanes(GetParam(), cornerF), 15 & ~(1 << lane))
+        << c.first << " (float), lane " << lane;
+    }
+  }
 }
 
 TEST_P(AreaVectorKernel, RandomFloatTrianglesMeetTheDocumentedBound)
