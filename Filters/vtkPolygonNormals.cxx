@@ -48,11 +48,8 @@ inline O Saturate(double x)
   return static_cast<O>(std::max(-top, std::min(top, x)));
 }
 
-/**
- * Where a pass over one of the input's cell arrays writes. Arrays the user did not ask for are
- * null. `FaceData` receives, per cell, what the point normals need: for AREA weighting the area
- * vector as FaceData * 2^FaceExponent, the unit normal otherwise.
- */
+/// Where a pass over one of the input's cell arrays writes. Arrays the user did not ask for are
+/// null.
 template <class O>
 struct CellOutputs
 {
@@ -60,8 +57,8 @@ struct CellOutputs
   O* AreaVectors = nullptr;
   O* Areas = nullptr;
   unsigned char* Status = nullptr;
-  double* FaceData = nullptr;
-  int* FaceExponent = nullptr;
+
+  bool Any() const { return this->Normals || this->AreaVectors || this->Areas || this->Status; }
 };
 
 template <class O>
@@ -89,19 +86,44 @@ inline void WriteCell(const CellOutputs<O>& out, vtkIdType cell, const AreaVecto
   {
     out.Status[cell] = r.Status;
   }
-  if (out.FaceData)
+}
+
+/// Lane j of a completed group of triangles as a per-polygon result.
+inline AreaVector LaneResult(const phongvtk::TriangleLanes& lanes, int j)
+{
+  AreaVector r;
+  for (int c = 0; c < 3; ++c)
   {
-    double* f = out.FaceData + 3 * cell;
-    if (out.FaceExponent)
+    r.Normal[c] = lanes.Normal[c][j];
+    r.Vector[c] = lanes.Vector[c][j];
+  }
+  r.Length = lanes.Length[j];
+  r.Exponent = 0;
+  r.Status = phongvtk::StatusOk;
+  return r;
+}
+
+/// Pointers to the coordinates of the corners of triangles `cell` ... `cell + 3`.
+template <class T, class Offsets, class Connectivity>
+inline void TriangleCorners(const T* points, const Offsets* offsets,
+  const Connectivity* connectivity, vtkIdType cell, const T* corner[3][4])
+{
+  for (int j = 0; j < 4; ++j)
+  {
+    const Connectivity* ids = connectivity + offsets[cell + j];
+    for (int v = 0; v < 3; ++v)
     {
-      std::copy(r.Vector, r.Vector + 3, f);
-      out.FaceExponent[cell] = r.Exponent;
-    }
-    else
-    {
-      std::copy(r.Normal, r.Normal + 3, f);
+      corner[v][j] = points + 3 * static_cast<std::int64_t>(ids[v]);
     }
   }
+}
+
+/// Whether cells cell ... cell + 3 are triangles.
+template <class Offsets>
+inline bool AreFourTriangles(const Offsets* offsets, vtkIdType cell)
+{
+  const Offsets* o = offsets + cell;
+  return o[1] - o[0] == 3 && o[2] - o[1] == 3 && o[3] - o[2] == 3 && o[4] - o[3] == 3;
 }
 
 /// The unit normals of four cells (component by component, one cell per lane) as 12
@@ -151,19 +173,12 @@ struct AreaVectorWorker
     vtkIdType pending = 0;
     for (vtkIdType cell = begin; cell < end;)
     {
-      if (!this->Strips && cell + 4 <= end && this->AreFourTriangles(cell))
+      if (!this->Strips && cell + 4 <= end && this->AreFourValidTriangles(cell))
       {
         // Runs of triangles go four at a time, one per SIMD lane; a triangle outside the
         // common case takes the per-polygon path.
         const T* corner[3][4];
-        for (int j = 0; j < 4; ++j)
-        {
-          const Connectivity* ids = this->CellConnectivity + this->CellOffsets[cell + j];
-          for (int v = 0; v < 3; ++v)
-          {
-            corner[v][j] = this->Points + 3 * static_cast<std::int64_t>(ids[v]);
-          }
-        }
+        TriangleCorners(this->Points, this->CellOffsets, this->CellConnectivity, cell, corner);
         phongvtk::TriangleLanes lanes;
         phongvtk::ComputeTriangles4<A, T>(corner, lanes);
         if (lanes.Done == 15 && this->NormalsOnly)
@@ -176,7 +191,7 @@ struct AreaVectorWorker
         {
           if (lanes.Done & (1 << j))
           {
-            this->WriteLane(lanes, j, cell + j);
+            WriteCell(this->Out, this->FirstOutputCell + cell + j, LaneResult(lanes, j));
           }
           else
           {
@@ -206,14 +221,13 @@ struct AreaVectorWorker
   }
 
   /// Whether cells cell ... cell + 3 are triangles with valid point ids.
-  bool AreFourTriangles(vtkIdType cell) const
+  bool AreFourValidTriangles(vtkIdType cell) const
   {
-    const Offsets* o = this->CellOffsets + cell;
-    if (o[1] - o[0] != 3 || o[2] - o[1] != 3 || o[3] - o[2] != 3 || o[4] - o[3] != 3)
+    if (!AreFourTriangles(this->CellOffsets, cell))
     {
       return false;
     }
-    const Connectivity* ids = this->CellConnectivity + o[0];
+    const Connectivity* ids = this->CellConnectivity + this->CellOffsets[cell];
     const auto numberOfPoints = static_cast<UnsignedId>(this->NumberOfPoints);
     bool valid = true;
     for (int k = 0; k < 12; ++k)
@@ -261,21 +275,6 @@ struct AreaVectorWorker
       };
       phongvtk::ComputeAreaVectorDeferred<A, T>(vertex, n, r);
     }
-  }
-
-  /// Writes lane j of a completed group of triangles as the output cell of input cell `cell`.
-  PHONGVTK_INLINE void WriteLane(const phongvtk::TriangleLanes& lanes, int j, vtkIdType cell) const
-  {
-    AreaVector r;
-    for (int c = 0; c < 3; ++c)
-    {
-      r.Normal[c] = lanes.Normal[c][j];
-      r.Vector[c] = lanes.Vector[c][j];
-    }
-    r.Length = lanes.Length[j];
-    r.Exponent = 0;
-    r.Status = phongvtk::StatusOk;
-    WriteCell(this->Out, this->FirstOutputCell + cell, r);
   }
 };
 
@@ -387,26 +386,59 @@ inline int ScaledEdge(const T* q, const T* v, double e[3])
 }
 
 /**
- * Adds one face's contribution to the point normal sums of its corners. `vertexId(i)` gives the
- * face's i-th point id; the face's FaceData entry is `face * 2^exponent` (area vector for AREA,
- * unit normal otherwise).
+ * The points [First, First + Count) whose normals one task of the point pass computes, and their
+ * sums. A face adds its contribution to the corners inside the range only.
+ */
+struct PointRange
+{
+  vtkIdType First = 0;
+  vtkIdType Count = 0;
+  ScaledSum* Sums = nullptr;
+
+  ScaledSum* Find(vtkIdType id) const
+  {
+    const auto i = static_cast<std::make_unsigned_t<vtkIdType>>(id - this->First);
+    return i < static_cast<std::make_unsigned_t<vtkIdType>>(this->Count) ? this->Sums + i : nullptr;
+  }
+};
+
+/**
+ * Adds one face's contribution to the point normal sums of its corners in `range`. `vertexId(i)`
+ * gives the face's i-th point id; the face is the area vector `r.Vector * 2^r.Exponent` for AREA
+ * weighting, the unit normal otherwise. Faces without a normal contribute nothing.
  */
 template <class T, class VertexIdFn>
 void ScatterFace(int weighting, const T* pts, const VertexIdFn& vertexId, std::int64_t n,
-  const double face[3], int exponent, ScaledSum* sums)
+  const AreaVector& r, const PointRange& range)
 {
+  if (r.Status != phongvtk::StatusOk)
+  {
+    return; // degenerate or flagged: no direction to contribute
+  }
   if (weighting == vtkPolygonNormals::AREA || weighting == vtkPolygonNormals::UNIFORM)
   {
+    const bool area = weighting == vtkPolygonNormals::AREA;
+    const double* face = area ? r.Vector : r.Normal;
+    const int exponent = area ? r.Exponent : 0;
     for (std::int64_t i = 0; i < n; ++i)
     {
-      sums[vertexId(i)].Add(face, exponent);
+      if (ScaledSum* sum = range.Find(vertexId(i)))
+      {
+        sum->Add(face, exponent);
+      }
     }
     return;
   }
   // ANGLE and MAX look at each corner: the edges to the previous and the next vertex, each
   // scaled by its own power of two (the angle does not change; Max's weight scales back).
+  const double* face = r.Normal;
   for (std::int64_t i = 0; i < n; ++i)
   {
+    ScaledSum* sum = range.Find(vertexId(i));
+    if (!sum)
+    {
+      continue;
+    }
     const T* v = pts + 3 * vertexId(i);
     double a[3], b[3];
     const int ka = ScaledEdge(pts + 3 * vertexId((i + n - 1) % n), v, a);
@@ -423,7 +455,7 @@ void ScatterFace(int weighting, const T* pts, const VertexIdFn& vertexId, std::i
       const double cosine = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
       const double angle = std::atan2(sine, cosine);
       const double weighted[3] = { angle * face[0], angle * face[1], angle * face[2] };
-      sums[vertexId(i)].Add(weighted, 0);
+      sum->Add(weighted, 0);
     }
     else
     {
@@ -433,34 +465,38 @@ void ScatterFace(int weighting, const T* pts, const VertexIdFn& vertexId, std::i
       const double bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
       const double inv = 1.0 / (aa * bb);
       const double weighted[3] = { x[0] * inv, x[1] * inv, x[2] * inv };
-      sums[vertexId(i)].Add(weighted, -(ka + kb));
+      sum->Add(weighted, -(ka + kb));
     }
   }
 }
 
+/// The unit normals of a range's sums (zero for a zero or non-finite sum).
 template <class O>
-void NormalizeSums(const std::vector<ScaledSum>& sums, O* normals, vtkIdType n)
+void NormalizeSums(const PointRange& range, O* normals)
 {
-  vtkSMPTools::For(0, n,
-    [&](vtkIdType begin, vtkIdType end)
+  for (vtkIdType i = 0; i < range.Count; ++i)
+  {
+    double unit[3] = { 0.0, 0.0, 0.0 };
+    double length;
+    int k;
+    const double* s = range.Sums[i].S;
+    if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]))
     {
-      for (vtkIdType p = begin; p < end; ++p)
-      {
-        double unit[3] = { 0.0, 0.0, 0.0 };
-        double length;
-        int k;
-        const double* s = sums[p].S;
-        if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]))
-        {
-          phongvtk::detail::NormalizeDouble(s, unit, length, k);
-        }
-        for (int c = 0; c < 3; ++c)
-        {
-          normals[3 * p + c] = static_cast<O>(unit[c]);
-        }
-      }
-    });
+      phongvtk::detail::NormalizeDouble(s, unit, length, k);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      normals[3 * (range.First + i) + c] = static_cast<O>(unit[c]);
+    }
+  }
 }
+
+/// Smallest and largest point id used by a block of polygons (empty: First > Last).
+struct IdSpan
+{
+  vtkIdType First;
+  vtkIdType Last;
+};
 
 /// Visits the storage of a vtkCellArray with typed offsets and connectivity pointers.
 struct RawCells
@@ -490,8 +526,6 @@ public:
   CellOutputs<O> Out;
   vtkIdType NonFinite = 0;
   vtkIdType FirstBadCell = -1;
-  std::unique_ptr<double[]> FaceData;
-  std::unique_ptr<int[]> FaceExponent;
 
   bool Run(O* pointNormals)
   {
@@ -502,59 +536,25 @@ public:
     const vtkIdType numStrips = input->GetNumberOfStrips();
     const vtkIdType numCells = numVerts + numLines + numPolys + numStrips;
 
-    if (this->PointNormals)
-    {
-      // Every cell writes its entry, so the buffers need no initialisation.
-      this->FaceData.reset(new double[3 * numCells]);
-      this->Out.FaceData = this->FaceData.get();
-      if (this->Weighting == vtkPolygonNormals::AREA)
-      {
-        this->FaceExponent.reset(new int[numCells]);
-        this->Out.FaceExponent = this->FaceExponent.get();
-      }
-    }
-
     // Vertices and lines are not surfaces; their point ids are checked all the same, since the
     // output passes them through.
-    AreaVector notSurface;
-    notSurface.SetZero(phongvtk::StatusNotSurface);
     vtkSMPThreadLocal<CellCounts> counts;
-    vtkCellArray* curves[2] = { input->GetVerts(), input->GetLines() };
-    vtkIdType first = 0;
-    for (vtkCellArray* cells : curves)
+    this->CheckCells(input->GetVerts(), 0, counts, true);
+    this->CheckCells(input->GetLines(), numVerts, counts, true);
+    const double share = this->PointNormals ? 0.5 : 1.0;
+    if (this->Out.Any() || this->HasNonFinitePoint())
     {
-      const vtkIdType n = cells ? cells->GetNumberOfCells() : 0;
-      if (n > 0)
-      {
-        cells->Visit(RawCells{},
-          [&](const auto* offsets, const auto* conn)
-          {
-            using Id =
-              std::make_unsigned_t<std::remove_cv_t<std::remove_pointer_t<decltype(conn)>>>;
-            vtkSMPTools::For(0, n,
-              [&](vtkIdType begin, vtkIdType end)
-              {
-                CellCounts& local = counts.Local();
-                for (vtkIdType cell = begin; cell < end; ++cell)
-                {
-                  for (auto k = offsets[cell]; k < offsets[cell + 1]; ++k)
-                  {
-                    if (static_cast<Id>(conn[k]) >= static_cast<Id>(this->NumberOfPoints) &&
-                      (local.FirstBadCell < 0 || first + cell < local.FirstBadCell))
-                    {
-                      local.FirstBadCell = first + cell;
-                    }
-                  }
-                  WriteCell(this->Out, first + cell, notSurface);
-                }
-              });
-          });
-      }
-      first += n;
+      this->RunSurfaces(input->GetPolys(), numVerts + numLines, false, counts, numCells, share);
+      this->RunSurfaces(
+        input->GetStrips(), numVerts + numLines + numPolys, true, counts, numCells, share);
     }
-
-    this->RunSurfaces(input->GetPolys(), numVerts + numLines, false, counts, numCells);
-    this->RunSurfaces(input->GetStrips(), numVerts + numLines + numPolys, true, counts, numCells);
+    else
+    {
+      // Point normals only, of finite points: the cell pass has nothing to write or count; the
+      // point pass computes the faces it needs.
+      this->CheckCells(input->GetPolys(), numVerts + numLines, counts, false);
+      this->CheckCells(input->GetStrips(), numVerts + numLines + numPolys, counts, false);
+    }
     for (const CellCounts& c : counts)
     {
       this->NonFinite += c.NonFinite;
@@ -569,15 +569,95 @@ public:
     }
     if (this->PointNormals && !this->Filter->GetAbortExecute())
     {
-      this->ComputePointNormals(numVerts + numLines, numPolys, pointNormals);
+      switch (this->AccuracyMode)
+      {
+        case vtkPolygonNormals::FAST:
+          this->ComputePointNormals<Accuracy::Fast>(pointNormals);
+          break;
+        case vtkPolygonNormals::COMPENSATED:
+          this->ComputePointNormals<Accuracy::Compensated>(pointNormals);
+          break;
+        case vtkPolygonNormals::EXACT:
+          this->ComputePointNormals<Accuracy::Exact>(pointNormals);
+          break;
+        default:
+          this->ComputePointNormals<Accuracy::Double>(pointNormals);
+          break;
+      }
     }
     return true;
   }
 
 private:
+  /// Checks the point ids of a cell array (and marks its cells as not surfaces).
+  void CheckCells(
+    vtkCellArray* cells, vtkIdType first, vtkSMPThreadLocal<CellCounts>& counts, bool notSurfaces)
+  {
+    const vtkIdType n = cells ? cells->GetNumberOfCells() : 0;
+    if (n == 0)
+    {
+      return;
+    }
+    AreaVector notSurface;
+    notSurface.SetZero(phongvtk::StatusNotSurface);
+    cells->Visit(RawCells{},
+      [&](const auto* offsets, const auto* conn)
+      {
+        using Id = std::make_unsigned_t<std::remove_cv_t<std::remove_pointer_t<decltype(conn)>>>;
+        const auto numberOfPoints = static_cast<Id>(this->NumberOfPoints);
+        vtkSMPTools::For(0, n,
+          [&](vtkIdType begin, vtkIdType end)
+          {
+            CellCounts& local = counts.Local();
+            for (vtkIdType cell = begin; cell < end; ++cell)
+            {
+              bool valid = true;
+              for (auto k = offsets[cell]; k < offsets[cell + 1]; ++k)
+              {
+                valid &= static_cast<Id>(conn[k]) < numberOfPoints;
+              }
+              if (!valid && (local.FirstBadCell < 0 || first + cell < local.FirstBadCell))
+              {
+                local.FirstBadCell = first + cell;
+              }
+              if (notSurfaces)
+              {
+                WriteCell(this->Out, first + cell, notSurface);
+              }
+            }
+          });
+      });
+  }
+
+  /// Whether any point coordinate is NaN or infinite.
+  bool HasNonFinitePoint() const
+  {
+    vtkSMPThreadLocal<unsigned char> found(0);
+    const T* pts = this->Points;
+    vtkSMPTools::For(0, 3 * this->NumberOfPoints,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        // x - x is 0 for finite x and NaN otherwise; the sum is NaN if any term is.
+        T sum = 0;
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          sum += pts[i] - pts[i];
+        }
+        found.Local() |= !(sum == 0);
+      });
+    for (unsigned char f : found)
+    {
+      if (f)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
   /// Polygons or strips, in blocks so that progress is reported and abort honoured.
   void RunSurfaces(vtkCellArray* cells, vtkIdType firstCell, bool strips,
-    vtkSMPThreadLocal<CellCounts>& counts, vtkIdType numCells)
+    vtkSMPThreadLocal<CellCounts>& counts, vtkIdType numCells, double share)
   {
     const vtkIdType n = cells ? cells->GetNumberOfCells() : 0;
     if (n == 0)
@@ -593,19 +673,19 @@ private:
         {
           case vtkPolygonNormals::FAST:
             this->RunBlocks<Accuracy::Fast, Off, Conn>(
-              offsets, conn, n, firstCell, strips, counts, numCells);
+              offsets, conn, n, firstCell, strips, counts, numCells, share);
             break;
           case vtkPolygonNormals::COMPENSATED:
             this->RunBlocks<Accuracy::Compensated, Off, Conn>(
-              offsets, conn, n, firstCell, strips, counts, numCells);
+              offsets, conn, n, firstCell, strips, counts, numCells, share);
             break;
           case vtkPolygonNormals::EXACT:
             this->RunBlocks<Accuracy::Exact, Off, Conn>(
-              offsets, conn, n, firstCell, strips, counts, numCells);
+              offsets, conn, n, firstCell, strips, counts, numCells, share);
             break;
           default:
             this->RunBlocks<Accuracy::Double, Off, Conn>(
-              offsets, conn, n, firstCell, strips, counts, numCells);
+              offsets, conn, n, firstCell, strips, counts, numCells, share);
             break;
         }
       });
@@ -613,62 +693,184 @@ private:
 
   template <Accuracy A, class Off, class Conn>
   void RunBlocks(const Off* offsets, const Conn* conn, vtkIdType n, vtkIdType firstCell,
-    bool strips, vtkSMPThreadLocal<CellCounts>& counts, vtkIdType numCells)
+    bool strips, vtkSMPThreadLocal<CellCounts>& counts, vtkIdType numCells, double share)
   {
     AreaVectorWorker<A, T, O, Off, Conn> worker{ this->Points, this->NumberOfPoints, offsets, conn,
       strips, firstCell, this->Out, &counts,
-      this->Out.Normals && !this->Out.AreaVectors && !this->Out.Areas && !this->Out.Status &&
-        !this->Out.FaceData };
+      this->Out.Normals && !this->Out.AreaVectors && !this->Out.Areas && !this->Out.Status };
     const vtkIdType block = std::max<vtkIdType>(65536, (n + 9) / 10);
     for (vtkIdType begin = 0; begin < n && !this->Filter->GetAbortExecute(); begin += block)
     {
       const vtkIdType end = std::min(n, begin + block);
       vtkSMPTools::For(begin, end, worker);
-      const double share = this->PointNormals ? 0.8 : 1.0;
       this->Filter->UpdateProgress(
         share * static_cast<double>(firstCell + end) / static_cast<double>(numCells));
     }
   }
 
-  /// Serial scatter of the face contributions (bitwise identical for any thread count), then
-  /// parallel normalisation.
-  void ComputePointNormals(vtkIdType firstPoly, vtkIdType numPolys, O* pointNormals)
+  /// Polygons per block of the point pass.
+  static constexpr vtkIdType PolyBlock = 1024;
+
+  /**
+   * Point normals, in parallel and bitwise the same for any number of threads. The points are
+   * split into ranges, one task each; a task visits, in cell order, every block of polygons
+   * that uses one of its points, recomputes those faces and adds their contributions to its own
+   * points only. Every point's sum is then the same fold over its faces in cell order however
+   * the points are split, and no per-face buffer makes a round trip through memory. Blocks record
+   * the span of point ids they use, so on a coherent mesh a task visits only the blocks around
+   * its range; on an incoherent one the ranges grow until the repeated face work stays bounded.
+   */
+  template <Accuracy A>
+  void ComputePointNormals(O* pointNormals)
   {
-    std::vector<ScaledSum> sums(static_cast<std::size_t>(this->NumberOfPoints));
-    const int weighting = this->Weighting;
-    const T* pts = this->Points;
     vtkCellArray* polys = this->Input->GetPolys();
+    const vtkIdType numPolys = polys ? polys->GetNumberOfCells() : 0;
+    const vtkIdType numBlocks = (numPolys + PolyBlock - 1) / PolyBlock;
+    std::vector<IdSpan> spans(static_cast<std::size_t>(numBlocks));
     if (numPolys > 0)
     {
       polys->Visit(RawCells{},
         [&](const auto* offsets, const auto* conn)
         {
-          for (vtkIdType cell = 0; cell < numPolys; ++cell)
-          {
-            const double* face = this->FaceData.get() + 3 * (firstPoly + cell);
-            if (face[0] == 0.0 && face[1] == 0.0 && face[2] == 0.0)
+          vtkSMPTools::For(0, numBlocks,
+            [&](vtkIdType begin, vtkIdType end)
             {
-              continue; // degenerate or flagged: no direction to contribute
-            }
-            const auto* ids = conn + offsets[cell];
-            const int exponent = this->FaceExponent ? this->FaceExponent[firstPoly + cell] : 0;
-            ScatterFace(
-              weighting, pts, [ids](std::int64_t i) { return static_cast<vtkIdType>(ids[i]); },
-              offsets[cell + 1] - offsets[cell], face, exponent, sums.data());
-          }
+              for (vtkIdType b = begin; b < end; ++b)
+              {
+                IdSpan span{ this->NumberOfPoints, -1 };
+                const auto last = offsets[std::min(numPolys, (b + 1) * PolyBlock)];
+                for (auto k = offsets[b * PolyBlock]; k < last; ++k)
+                {
+                  span.First = std::min<vtkIdType>(span.First, conn[k]);
+                  span.Last = std::max<vtkIdType>(span.Last, conn[k]);
+                }
+                spans[b] = span;
+              }
+            });
         });
     }
-    this->Filter->UpdateProgress(0.9);
+    const vtkIdType rangeSize = this->PointRangeSize(spans, numPolys);
+    const vtkIdType numRanges = (this->NumberOfPoints + rangeSize - 1) / rangeSize;
+    this->Filter->UpdateProgress(0.6);
+
+    vtkSMPThreadLocal<std::vector<ScaledSum>> localSums;
     vtkCellArray* strips = this->Input->GetStrips();
-    if (strips && strips->GetNumberOfCells() > 0)
+    vtkSMPTools::For(0, numRanges, 1,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        std::vector<ScaledSum>& sums = localSums.Local();
+        for (vtkIdType r = begin; r < end && !this->Filter->GetAbortExecute(); ++r)
+        {
+          PointRange range;
+          range.First = r * rangeSize;
+          range.Count = std::min(rangeSize, this->NumberOfPoints - range.First);
+          sums.assign(static_cast<std::size_t>(range.Count), ScaledSum());
+          range.Sums = sums.data();
+          if (numPolys > 0)
+          {
+            polys->Visit(RawCells{},
+              [&](const auto* offsets, const auto* conn)
+              {
+                for (vtkIdType b = 0; b < numBlocks; ++b)
+                {
+                  if (spans[b].Last >= range.First && spans[b].First < range.First + range.Count)
+                  {
+                    this->ScatterPolygons<A>(
+                      offsets, conn, b * PolyBlock, std::min(numPolys, (b + 1) * PolyBlock), range);
+                  }
+                }
+              });
+          }
+          if (strips && strips->GetNumberOfCells() > 0)
+          {
+            this->ScatterStrips<A>(strips, range);
+          }
+          NormalizeSums(range, pointNormals);
+        }
+      });
+  }
+
+  /**
+   * Points per range: small enough that a range's sums stay in cache and the ranges keep every
+   * thread busy, large enough that the polygons visited by more than one range (those whose
+   * span crosses a range boundary) add at most a quarter to the face work. At worst one range
+   * per thread: each then computes every face once, in parallel.
+   */
+  vtkIdType PointRangeSize(const std::vector<IdSpan>& spans, vtkIdType numPolys) const
+  {
+    const vtkIdType threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+    const vtkIdType widest = std::max<vtkIdType>(1, (this->NumberOfPoints + threads - 1) / threads);
+    vtkIdType size = std::min<vtkIdType>(16384, widest);
+    for (; size < widest; size *= 4)
     {
-      this->ScatterStrips(strips, sums);
+      vtkIdType visits = 0;
+      for (const IdSpan& span : spans)
+      {
+        if (span.First <= span.Last)
+        {
+          visits += span.Last / size - span.First / size + 1;
+        }
+      }
+      if (visits * PolyBlock <= numPolys + numPolys / 4 + PolyBlock)
+      {
+        return size;
+      }
     }
-    NormalizeSums(sums, pointNormals, this->NumberOfPoints);
+    return widest;
+  }
+
+  /// Adds the faces of polygons [begin, end) to a range's sums, triangles four at a time.
+  template <Accuracy A, class Off, class Conn>
+  void ScatterPolygons(
+    const Off* offsets, const Conn* conn, vtkIdType begin, vtkIdType end, const PointRange& range)
+  {
+    const T* pts = this->Points;
+    const int weighting = this->Weighting;
+    for (vtkIdType cell = begin; cell < end;)
+    {
+      if (cell + 4 <= end && AreFourTriangles(offsets, cell))
+      {
+        const T* corner[3][4];
+        TriangleCorners(pts, offsets, conn, cell, corner);
+        phongvtk::TriangleLanes lanes;
+        phongvtk::ComputeTriangles4<A, T>(corner, lanes);
+        for (int j = 0; j < 4; ++j, ++cell)
+        {
+          const Conn* ids = conn + offsets[cell];
+          auto vertexId = [ids](std::int64_t i)
+          {
+            return static_cast<vtkIdType>(ids[i]);
+          };
+          if (lanes.Done & (1 << j))
+          {
+            ScatterFace(weighting, pts, vertexId, 3, LaneResult(lanes, j), range);
+          }
+          else
+          {
+            AreaVector r;
+            phongvtk::ComputeAreaVector<A, T>([pts, ids](std::int64_t i)
+              { return pts + 3 * static_cast<std::int64_t>(ids[i]); },
+              3, r);
+            ScatterFace(weighting, pts, vertexId, 3, r, range);
+          }
+        }
+        continue;
+      }
+      const Conn* ids = conn + offsets[cell];
+      const std::int64_t n = offsets[cell + 1] - offsets[cell];
+      AreaVector r;
+      phongvtk::ComputeAreaVector<A, T>(
+        [pts, ids](std::int64_t i) { return pts + 3 * static_cast<std::int64_t>(ids[i]); }, n, r);
+      ScatterFace(
+        weighting, pts, [ids](std::int64_t i) { return static_cast<vtkIdType>(ids[i]); }, n, r,
+        range);
+      ++cell;
+    }
   }
 
   /// A strip contributes triangle by triangle, each with the strip's alternating orientation.
-  void ScatterStrips(vtkCellArray* strips, std::vector<ScaledSum>& sums)
+  template <Accuracy A>
+  void ScatterStrips(vtkCellArray* strips, const PointRange& range)
   {
     const T* pts = this->Points;
     strips->Visit(RawCells{},
@@ -682,34 +884,15 @@ private:
           {
             const vtkIdType tri[3] = { static_cast<vtkIdType>(ids[j + (j & 1)]),
               static_cast<vtkIdType>(ids[j + 1 - (j & 1)]), static_cast<vtkIdType>(ids[j + 2]) };
-            auto vertex = [pts, &tri](std::int64_t i)
-            {
-              return pts + 3 * tri[i];
-            };
-            AreaVector r;
-            switch (this->AccuracyMode)
-            {
-              case vtkPolygonNormals::FAST:
-                phongvtk::ComputeAreaVector<Accuracy::Fast, T>(vertex, 3, r);
-                break;
-              case vtkPolygonNormals::COMPENSATED:
-                phongvtk::ComputeAreaVector<Accuracy::Compensated, T>(vertex, 3, r);
-                break;
-              case vtkPolygonNormals::EXACT:
-                phongvtk::ComputeAreaVector<Accuracy::Exact, T>(vertex, 3, r);
-                break;
-              default:
-                phongvtk::ComputeAreaVector<Accuracy::Double, T>(vertex, 3, r);
-                break;
-            }
-            if (r.Status != phongvtk::StatusOk)
+            if (!range.Find(tri[0]) && !range.Find(tri[1]) && !range.Find(tri[2]))
             {
               continue;
             }
-            const bool area = this->Weighting == vtkPolygonNormals::AREA;
+            AreaVector r;
+            phongvtk::ComputeAreaVector<A, T>(
+              [pts, &tri](std::int64_t i) { return pts + 3 * tri[i]; }, 3, r);
             ScatterFace(
-              this->Weighting, pts, [&tri](std::int64_t i) { return tri[i]; }, 3,
-              area ? r.Vector : r.Normal, area ? r.Exponent : 0, sums.data());
+              this->Weighting, pts, [&tri](std::int64_t i) { return tri[i]; }, 3, r, range);
           }
         }
       });

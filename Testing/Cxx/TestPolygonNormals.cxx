@@ -36,6 +36,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <random>
 #include <regex>
 #include <sstream>
@@ -1520,13 +1521,15 @@ BadRun RunWatched(vtkPolyData* input, const std::function<void(vtkPolygonNormals
 
 void ExpectRejected(vtkPolyData* input, vtkIdType firstBadCell, const std::string& what)
 {
-  for (bool pointNormals : { false, true })
+  // Cell outputs, cell and point outputs, point normals alone (no cell pass to find it).
+  for (int outputs : { 0, 1, 2 })
   {
     BadRun run = RunWatched(input,
-      [pointNormals](vtkPolygonNormals* f)
+      [outputs](vtkPolygonNormals* f)
       {
-        f->SetComputePointNormals(pointNormals);
-        f->ComputeNormalStatusOn();
+        f->SetComputePointNormals(outputs > 0);
+        f->SetComputeCellNormals(outputs < 2);
+        f->SetComputeNormalStatus(outputs < 2);
       });
     ASSERT_EQ(run.Errors.size(), 1u) << what;
     const std::string message = Lower(run.Errors[0]);
@@ -1652,6 +1655,41 @@ TEST(PolygonNormalsBadInput, NonFiniteCoordinatesFlagTheirCellsWithOneWarning)
       const auto n = Tuple3(pointNormals, p);
       EXPECT_TRUE(IsFinite(n)) << ModeName(mode) << " point " << p;
       EXPECT_EQ(IsZero(n), p == 4 || p == 5 || p == 7) << ModeName(mode) << " point " << p;
+    }
+  }
+}
+
+TEST(PolygonNormalsBadInput, NonFiniteCoordinatesAreCountedWhenOnlyPointNormalsAreAsked)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Point> points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { nan, 0, 0 } };
+  Cells cells;
+  cells.Polys = { { 0, 1, 2 }, { 0, 2, 3 }, { 1, 4, 2 }, { 4, 3, 2 } };
+  auto input = MakePolyData(points, cells);
+  for (int mode : Modes)
+  {
+    BadRun run = RunWatched(input,
+      [mode](vtkPolygonNormals* f)
+      {
+        f->SetAccuracy(mode);
+        f->ComputeCellNormalsOff();
+        f->ComputePointNormalsOn();
+      });
+    EXPECT_TRUE(run.Errors.empty()) << ModeName(mode);
+    ASSERT_EQ(run.Warnings.size(), 1u) << ModeName(mode);
+    EXPECT_TRUE(std::regex_search(run.Warnings[0], std::regex("(^|[^0-9])2([^0-9]|$)")))
+      << "the warning should give the count 2: " << run.Warnings[0];
+    vtkDataArray* normals = run.Output->GetPointData()->GetNormals();
+    ASSERT_NE(normals, nullptr);
+    for (vtkIdType p = 0; p < 5; ++p)
+    {
+      const auto n = Tuple3(normals, p);
+      EXPECT_TRUE(IsFinite(n)) << ModeName(mode) << " point " << p;
+      EXPECT_EQ(IsZero(n), p == 4) << ModeName(mode) << " point " << p;
+      if (p != 4)
+      {
+        EXPECT_NEAR(n[2], 1.0, 1e-7) << ModeName(mode) << " point " << p;
+      }
     }
   }
 }
@@ -1963,6 +2001,87 @@ TEST(PolygonNormalsThreads, OutputIsBitwiseIdenticalForEveryBackendAndThreadCoun
     }
   }
   vtkSMPTools::SetBackend(original.c_str());
+}
+
+TEST(PolygonNormalsThreads, PointNormalsDoNotDependOnThePointOrder)
+{
+  // The point pass splits the points into ranges and visits the blocks of cells whose point ids
+  // reach into a range. Numbering the points at random (every block then spans every range)
+  // must give each point the same normal bit for bit: its faces are the same, in the same cell
+  // order. The same holds with and without the cell outputs (the cell pass is skipped without
+  // them) and for any number of threads.
+  auto mesh = JitteredSphere(300, 1e-4);
+  const vtkIdType numPoints = mesh->GetNumberOfPoints();
+  std::vector<vtkIdType> newId(static_cast<std::size_t>(numPoints));
+  std::iota(newId.begin(), newId.end(), 0);
+  std::shuffle(newId.begin(), newId.end(), std::mt19937_64(5));
+  auto shuffled = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(numPoints);
+  for (vtkIdType p = 0; p < numPoints; ++p)
+  {
+    points->SetPoint(newId[p], mesh->GetPoint(p));
+  }
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType* ids;
+  vtkIdType n;
+  for (mesh->GetPolys()->InitTraversal(); mesh->GetPolys()->GetNextCell(n, ids);)
+  {
+    std::vector<vtkIdType> renumbered(ids, ids + n);
+    for (vtkIdType& id : renumbered)
+    {
+      id = newId[id];
+    }
+    polys->InsertNextCell(n, renumbered.data());
+  }
+  shuffled->SetPoints(points);
+  shuffled->SetPolys(polys);
+
+  const std::string original = vtkSMPTools::GetBackend();
+  ASSERT_TRUE(vtkSMPTools::SetBackend("STDThread"));
+  for (int mode : Modes)
+  {
+    for (int weighting : { vtkPolygonNormals::AREA, vtkPolygonNormals::ANGLE })
+    {
+      auto pointsOnly = [mode, weighting](vtkPolygonNormals* f)
+      {
+        f->SetAccuracy(mode);
+        f->SetPointWeighting(weighting);
+        f->ComputeCellNormalsOff();
+        f->ComputePointNormalsOn();
+      };
+      vtkSMPTools::Initialize(1);
+      auto reference = RunFilter(mesh,
+        [&](vtkPolygonNormals* f)
+        {
+          pointsOnly(f);
+          f->ComputeCellNormalsOn();
+          f->ComputeNormalStatusOn();
+        });
+      vtkSMPTools::Initialize(2);
+      auto renumbered = RunFilter(shuffled, pointsOnly);
+      vtkDataArray* expected = reference->GetPointData()->GetNormals();
+      vtkDataArray* actual = renumbered->GetPointData()->GetNormals();
+      ASSERT_NE(expected, nullptr);
+      ASSERT_NE(actual, nullptr);
+      int mismatches = 0;
+      for (vtkIdType p = 0; p < numPoints; ++p)
+      {
+        const auto a = Tuple3(expected, p);
+        const auto b = Tuple3(actual, newId[p]);
+        if (std::memcmp(a.data(), b.data(), sizeof(a)) != 0 && ++mismatches <= 5)
+        {
+          ADD_FAILURE() << ModeName(mode) << " " << WeightingName(weighting) << ": point " << p
+                        << " (" << a[0] << ", " << a[1] << ", " << a[2] << ") renumbered (" << b[0]
+                        << ", " << b[1] << ", " << b[2] << ")";
+        }
+      }
+      EXPECT_EQ(mismatches, 0) << ModeName(mode) << " " << WeightingName(weighting);
+    }
+  }
+  vtkSMPTools::SetBackend(original.c_str());
+  vtkSMPTools::Initialize(0);
 }
 
 //==============================================================================
