@@ -800,7 +800,10 @@ private:
   {
     const vtkIdType threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
     const vtkIdType widest = std::max<vtkIdType>(1, (this->NumberOfPoints + threads - 1) / threads);
-    vtkIdType size = std::min<vtkIdType>(16384, widest);
+    // At least four ranges a thread, so that small meshes keep both threads busy too.
+    vtkIdType size = std::max<vtkIdType>(
+      1024, std::min<vtkIdType>(16384, (this->NumberOfPoints + 4 * threads - 1) / (4 * threads)));
+    size = std::min(size, widest);
     for (; size < widest; size *= 4)
     {
       vtkIdType visits = 0;
