@@ -184,19 +184,20 @@ struct AreaVectorWorker
         if (lanes.Done == 15 && this->NormalsOnly)
         {
           StoreNormals4(this->Out.Normals + 3 * (this->FirstOutputCell + cell), lanes.Normal);
-          cell += 4;
-          continue;
         }
-        for (int j = 0; j < 4; ++j)
+        else
         {
-          if (lanes.Done & (1 << j))
+          for (int j = 0; j < 4; ++j)
           {
-            WriteCell(this->Out, this->FirstOutputCell + cell + j, LaneResult(lanes, j));
-          }
-          else
-          {
-            cells[pending] = cell + j;
-            this->ComputePolygon(cell + j, counts, results[pending++]);
+            if (lanes.Done & (1 << j))
+            {
+              WriteCell(this->Out, this->FirstOutputCell + cell + j, LaneResult(lanes, j));
+            }
+            else
+            {
+              cells[pending] = cell + j;
+              this->ComputePolygon(cell + j, counts, results[pending++]);
+            }
           }
         }
         cell += 4;

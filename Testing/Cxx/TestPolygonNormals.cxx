@@ -1123,6 +1123,38 @@ TEST(PolygonNormalsCells, OutputFollowsVTKCellOrder)
   EXPECT_EQ(out->GetCellData()->GetArray("Areas")->GetTuple1(4), 1.0);
 }
 
+TEST(PolygonNormalsCells, PolygonsBeforeARunOfTrianglesGetTheirNormals)
+{
+  // Triangles go four per SIMD register, other polygons one by one (EXACT completes those in
+  // batches): a quad followed by a run of triangles that ends the input must get its normal.
+  Cells cells;
+  cells.Polys = { { 0, 1, 2, 3 }, { 0, 1, 2 }, { 0, 2, 3 }, { 1, 2, 3 }, { 0, 1, 3 } };
+  auto input = MakePolyData({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0.5 }, { 0, 1, 0.25 } }, cells);
+  for (int mode : Modes)
+  {
+    for (bool onlyNormals : { true, false })
+    {
+      auto out = RunFilter(input,
+        [mode, onlyNormals](vtkPolygonNormals* f)
+        {
+          f->SetAccuracy(mode);
+          f->SetComputeAreas(!onlyNormals);
+          f->SetOutputPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+        });
+      vtkDataArray* normals = out->GetCellData()->GetNormals();
+      ASSERT_NE(normals, nullptr);
+      for (vtkIdType cell = 0; cell < 5; ++cell)
+      {
+        const auto exact = phongvtk_test::ReferenceNormal(ExactCellAreaVector(input, cell));
+        const auto n = Tuple3(normals, cell);
+        EXPECT_LE(phongvtk_test::AngleError(n.data(), exact),
+          mode == vtkPolygonNormals::FAST ? 1e-6 : 1e-15)
+          << ModeName(mode) << " cell " << cell << (onlyNormals ? " (normals only)" : "");
+      }
+    }
+  }
+}
+
 TEST(PolygonNormalsCells, StripAreaVectorIsTheExactSumOfItsAlternatingTriangles)
 {
   // A twisted, non-planar strip of 9 points with irregular coordinates.
