@@ -1050,6 +1050,22 @@ struct TriangleLanes
   detail::V4 Vector[3]; // area vector w (exponent 0)
   detail::V4 Length;    // |w|
   int Done;             // bit j set: lane j is complete with status Ok
+
+  /// Lane j of a done lane as a per-polygon result.
+  AreaVector Result(int j) const
+  {
+    AreaVector r;
+    for (int c = 0; c < 3; ++c)
+    {
+      r.Normal[c] = this->Normal[c][j];
+      r.Vector[c] = this->Vector[c][j];
+      r.VectorLo[c] = 0.0;
+    }
+    r.Length = this->Length[j];
+    r.Exponent = 0;
+    r.Status = StatusOk;
+    return r;
+  }
 };
 
 namespace detail

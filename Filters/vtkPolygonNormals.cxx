@@ -88,21 +88,6 @@ inline void WriteCell(const CellOutputs<O>& out, vtkIdType cell, const AreaVecto
   }
 }
 
-/// Lane j of a completed group of triangles as a per-polygon result.
-inline AreaVector LaneResult(const phongvtk::TriangleLanes& lanes, int j)
-{
-  AreaVector r;
-  for (int c = 0; c < 3; ++c)
-  {
-    r.Normal[c] = lanes.Normal[c][j];
-    r.Vector[c] = lanes.Vector[c][j];
-  }
-  r.Length = lanes.Length[j];
-  r.Exponent = 0;
-  r.Status = phongvtk::StatusOk;
-  return r;
-}
-
 /// Pointers to the coordinates of the corners of triangles `cell` ... `cell + 3`.
 template <class T, class Offsets, class Connectivity>
 inline void TriangleCorners(const T* points, const Offsets* offsets,
@@ -191,7 +176,7 @@ struct AreaVectorWorker
           {
             if (lanes.Done & (1 << j))
             {
-              WriteCell(this->Out, this->FirstOutputCell + cell + j, LaneResult(lanes, j));
+              WriteCell(this->Out, this->FirstOutputCell + cell + j, lanes.Result(j));
             }
             else
             {
@@ -847,7 +832,7 @@ private:
           };
           if (lanes.Done & (1 << j))
           {
-            ScatterFace(weighting, pts, vertexId, 3, LaneResult(lanes, j), range);
+            ScatterFace(weighting, pts, vertexId, 3, lanes.Result(j), range);
           }
           else
           {

@@ -142,15 +142,7 @@ void ComputeIn(const Polygon<T>& polygon, AreaVector& out)
     return;
   }
   ++LaneCounts().Done;
-  AreaVector r;
-  for (int c = 0; c < 3; ++c)
-  {
-    r.Normal[c] = lanes.Normal[c][lane];
-    r.Vector[c] = lanes.Vector[c][lane];
-  }
-  r.Length = lanes.Length[lane];
-  r.Exponent = 0;
-  r.Status = phongvtk::StatusOk;
+  const AreaVector r = lanes.Result(lane);
   const bool same = std::memcmp(r.Normal, out.Normal, sizeof(r.Normal)) == 0 &&
     std::memcmp(r.Vector, out.Vector, sizeof(r.Vector)) == 0 &&
     std::memcmp(&r.Length, &out.Length, sizeof(r.Length)) == 0 && out.Exponent == 0 &&
