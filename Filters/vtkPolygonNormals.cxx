@@ -88,6 +88,20 @@ inline void WriteCell(const CellOutputs<O>& out, vtkIdType cell, const AreaVecto
   }
 }
 
+/// Whether the n point ids all lie in [0, numberOfPoints) (a negative id wraps to a huge one).
+template <class Connectivity>
+inline bool ValidIds(const Connectivity* ids, std::int64_t n, vtkIdType numberOfPoints)
+{
+  using UnsignedId = std::make_unsigned_t<Connectivity>;
+  const auto limit = static_cast<UnsignedId>(numberOfPoints);
+  bool valid = true;
+  for (std::int64_t k = 0; k < n; ++k)
+  {
+    valid &= static_cast<UnsignedId>(ids[k]) < limit;
+  }
+  return valid;
+}
+
 /// Pointers to the coordinates of the corners of triangles `cell` ... `cell + 3`.
 template <class T, class Offsets, class Connectivity>
 inline void TriangleCorners(const T* points, const Offsets* offsets,
@@ -148,7 +162,6 @@ struct AreaVectorWorker
   /// enough that the round trip through a batch costs more than it saves (measured: DOUBLE 24.7
   /// -> 20.0 ms on 2M triangles): their batch holds only the leftovers of one group of triangles.
   static constexpr vtkIdType Batch = A == Accuracy::Exact ? 64 : 4;
-  using UnsignedId = std::make_unsigned_t<Connectivity>;
 
   void operator()(vtkIdType begin, vtkIdType end) const
   {
@@ -213,14 +226,7 @@ struct AreaVectorWorker
     {
       return false;
     }
-    const Connectivity* ids = this->CellConnectivity + this->CellOffsets[cell];
-    const auto numberOfPoints = static_cast<UnsignedId>(this->NumberOfPoints);
-    bool valid = true;
-    for (int k = 0; k < 12; ++k)
-    {
-      valid &= static_cast<UnsignedId>(ids[k]) < numberOfPoints;
-    }
-    return valid;
+    return ValidIds(this->CellConnectivity + this->CellOffsets[cell], 12, this->NumberOfPoints);
   }
 
   /// The area vector of one cell, its normal possibly pending; an out-of-range point id is
@@ -229,14 +235,8 @@ struct AreaVectorWorker
   {
     const Connectivity* ids = this->CellConnectivity + this->CellOffsets[cell];
     const std::int64_t n = this->CellOffsets[cell + 1] - this->CellOffsets[cell];
-    const auto numberOfPoints = static_cast<UnsignedId>(this->NumberOfPoints);
-    bool valid = true;
-    for (std::int64_t k = 0; k < n; ++k)
-    {
-      valid &= static_cast<UnsignedId>(ids[k]) < numberOfPoints;
-    }
     const T* pts = this->Points;
-    if (!valid)
+    if (!ValidIds(ids, n, this->NumberOfPoints))
     {
       const vtkIdType outCell = this->FirstOutputCell + cell;
       if (counts.FirstBadCell < 0 || outCell < counts.FirstBadCell)
@@ -589,19 +589,14 @@ private:
     cells->Visit(RawCells{},
       [&](const auto* offsets, const auto* conn)
       {
-        using Id = std::make_unsigned_t<std::remove_cv_t<std::remove_pointer_t<decltype(conn)>>>;
-        const auto numberOfPoints = static_cast<Id>(this->NumberOfPoints);
         vtkSMPTools::For(0, n,
           [&](vtkIdType begin, vtkIdType end)
           {
             CellCounts& local = counts.Local();
             for (vtkIdType cell = begin; cell < end; ++cell)
             {
-              bool valid = true;
-              for (auto k = offsets[cell]; k < offsets[cell + 1]; ++k)
-              {
-                valid &= static_cast<Id>(conn[k]) < numberOfPoints;
-              }
+              const bool valid = ValidIds(
+                conn + offsets[cell], offsets[cell + 1] - offsets[cell], this->NumberOfPoints);
               if (!valid && (local.FirstBadCell < 0 || first + cell < local.FirstBadCell))
               {
                 local.FirstBadCell = first + cell;
