@@ -39,6 +39,8 @@ packages=(
   # toolchain
   g++ cmake ninja-build clang-format
   "${flavour[@]}"
+  # headless rendering: OSMesa and EGL (Mesa llvmpipe), no X server
+  libosmesa6-dev libegl-dev libgl-dev libx11-dev libglew-dev
   # exact arithmetic (EXACT fallback, test reference), tests, benchmarks
   libgmp-dev libgtest-dev libbenchmark-dev python3-pytest python3-numpy
   # real meshes nobody here wrote (CGAL's sample data)

@@ -1,0 +1,112 @@
+/**
+ * Private to PhongVTK::Rendering: the policy that picks a render window, and the libraries the
+ * headless backends load at run time.
+ *
+ * The policy (ParseRequest, ChooseWindow) is a pure function of its inputs so that every branch
+ * is tested without the machine having to lack a display or a library. The loaders look the
+ * libraries up once per process and say why a backend cannot be used instead of failing later
+ * inside a GL call.
+ */
+#ifndef PhongVTKHeadless_h
+#define PhongVTKHeadless_h
+
+#include "vtkPhongVTKRenderingModule.h" // for the export macro
+
+#include <string>
+
+struct osmesa_context;
+
+namespace phongvtk
+{
+namespace headless
+{
+
+/// What the environment variable PHONGVTK_HEADLESS asks for.
+enum class Request
+{
+  Auto,   ///< headless only without an X display; OSMesa, else EGL (unset or empty variable)
+  OSMesa, ///< always headless, OSMesa (EGL when OSMesa cannot be used)
+  EGL,    ///< always headless, EGL
+  Off     ///< leave VTK's own window alone
+};
+
+/// The render window vtkRenderWindow::New() returns.
+enum class Window
+{
+  VTKDefault, ///< whatever VTK's other factories make (the X window on Debian)
+  OSMesa,
+  EGL
+};
+
+struct Choice
+{
+  Window Kind = Window::VTKDefault;
+  /// Non-empty when the choice is a fallback the user did not ask for: say it once per process.
+  std::string Warning;
+};
+
+/// PHONGVTK_HEADLESS's value (case-insensitive); null or empty is Auto. An unknown value is Auto
+/// and `*invalid` receives a message naming it.
+VTKPHONGVTKRENDERING_EXPORT Request ParseRequest(const char* value, std::string* invalid);
+
+/// The window for a request. `osmesaProblem` is empty when OSMesa can be used, otherwise why not.
+VTKPHONGVTKRENDERING_EXPORT Choice ChooseWindow(
+  Request request, bool xDisplayAvailable, const std::string& osmesaProblem);
+
+/// The choice for this process now: PHONGVTK_HEADLESS, the X display, OSMesa's availability.
+VTKPHONGVTKRENDERING_EXPORT Choice ChooseWindowFromEnvironment();
+
+/// Whether DISPLAY names an X server that accepts a connection (probed once per DISPLAY value).
+VTKPHONGVTKRENDERING_EXPORT bool XDisplayAvailable();
+
+/// Emits `message` as a VTK warning the first time it is seen in this process.
+VTKPHONGVTKRENDERING_EXPORT void WarnOnce(const std::string& message);
+
+/**
+ * Mesa's OSMesa and glvnd's dispatch, loaded once per process.
+ *
+ * VTK calls OpenGL through glvnd (libGL/libGLdispatch): a call reaches whichever vendor libGLX
+ * or libEGL made current on the thread. An OSMesa context is invisible to glvnd, so Bind() also
+ * makes OSMesa's entry points current in libGLdispatch through the interface libGLX and libEGL
+ * use themselves (__glDispatchMakeCurrent, ABI version 1). That interface is private to glvnd,
+ * hence the version check: anything else and OSMesa is reported unusable.
+ */
+class VTKPHONGVTKRENDERING_EXPORT OSMesaLibrary
+{
+public:
+  /// The library, or null with the reason in `*problem`.
+  static const OSMesaLibrary* Get(std::string* problem);
+
+  /// A core-profile (>= 3.2) RGBA context without depth or stencil in its own framebuffer: VTK
+  /// renders into framebuffer objects. Null with a reason on failure.
+  osmesa_context* CreateContext(std::string* problem) const;
+  void DestroyContext(osmesa_context* context) const;
+
+  /// Makes `context` current on this thread, drawing into `buffer` (width x height RGBA bytes),
+  /// and routes glvnd's dispatch to it. The caller has released any other context first.
+  bool Bind(
+    osmesa_context* context, void* buffer, int width, int height, std::string* problem) const;
+  /// Releases the thread's OSMesa context and glvnd's dispatch to it, if they are current.
+  void Unbind() const;
+  /// Whether `context` is current on this thread and glvnd dispatches to it.
+  bool IsBound(osmesa_context* context) const;
+  /// Whether glvnd dispatches to some OSMesa context on this thread.
+  bool OwnsThreadDispatch() const;
+
+  struct Entry;
+
+private:
+  OSMesaLibrary() = default;
+  const Entry* E = nullptr;
+};
+
+/// Testing hook: the library names and the glvnd ABI version OSMesaLibrary::Get() will require.
+/// Only effective before the first Get() in the process.
+VTKPHONGVTKRENDERING_EXPORT void SetOSMesaLibrariesForTesting(
+  const char* osmesa, const char* glDispatch, int requiredDispatchABI);
+
+}
+}
+
+#endif
+// VTK-HeaderTest-Exclude: PhongVTKHeadless.h

@@ -1,0 +1,490 @@
+#include "vtk_glew.h" // before any other OpenGL header
+
+#include "vtkHeadlessRenderWindow.h"
+
+#include "PhongVTKHeadless.h"
+#include "vtkHeadlessEGLRenderWindow.h"
+#include "vtkHeadlessOSMesaRenderWindow.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
+#include "vtkVersionMacros.h"
+
+namespace
+{
+// The headless window whose context this thread last made current: binding another one releases
+// it first (an OSMesa and an EGL context cannot both be current, and glvnd refuses to switch
+// between window-system libraries without a release).
+thread_local vtkHeadlessRenderWindow* CurrentOnThread = nullptr;
+
+using phongvtk::headless::Window;
+
+vtkHeadlessRenderWindow* NewHeadless(Window kind)
+{
+  if (kind == Window::EGL)
+  {
+    return vtkHeadlessEGLRenderWindow::New();
+  }
+  return vtkHeadlessOSMesaRenderWindow::New();
+}
+
+// The override of vtkRenderWindow: a headless window when the environment asks for one, else
+// nothing, so that the next factory (VTK's X window) answers.
+vtkObject* CreateRenderWindow()
+{
+  const phongvtk::headless::Choice choice = phongvtk::headless::ChooseWindowFromEnvironment();
+  if (!choice.Warning.empty())
+  {
+    phongvtk::headless::WarnOnce(choice.Warning);
+  }
+  if (choice.Kind == Window::VTKDefault)
+  {
+    return nullptr;
+  }
+  return NewHeadless(choice.Kind);
+}
+
+class vtkHeadlessRenderWindowFactory : public vtkObjectFactory
+{
+public:
+  static vtkHeadlessRenderWindowFactory* New()
+  {
+    auto* factory = new vtkHeadlessRenderWindowFactory;
+    factory->InitializeObjectBase();
+    return factory;
+  }
+  vtkTypeMacro(vtkHeadlessRenderWindowFactory, vtkObjectFactory);
+  const char* GetVTKSourceVersion() override { return VTK_SOURCE_VERSION; }
+  const char* GetDescription() override
+  {
+    return "PhongVTK: headless OpenGL render windows (OSMesa, EGL) when there is no X display";
+  }
+
+protected:
+  vtkHeadlessRenderWindowFactory()
+  {
+    this->RegisterOverride("vtkRenderWindow", "vtkHeadlessRenderWindow",
+      "headless render window (PHONGVTK_HEADLESS=auto|osmesa|egl|off)", 1, &CreateRenderWindow);
+  }
+
+private:
+  vtkHeadlessRenderWindowFactory(const vtkHeadlessRenderWindowFactory&) = delete;
+  void operator=(const vtkHeadlessRenderWindowFactory&) = delete;
+};
+
+// The override exists in every process that loads the module: C++ programs with or without
+// vtk_module_autoinit, Python after `import phongvtk`, ParaView after loading the plugin.
+// vtkObjectFactory asks factories in registration order. One registered earlier (VTK's
+// RenderingOpenGL2 in a Python session that imported it first) would always make the X window,
+// so its override is switched off when this process renders headless.
+struct FactoryInstaller
+{
+  FactoryInstaller()
+  {
+    vtkObjectFactory::GetRegisteredFactories(); // creates the registry
+    if (vtkObjectFactory::HasOverrideAny("vtkRenderWindow") &&
+      phongvtk::headless::ChooseWindowFromEnvironment().Kind != Window::VTKDefault)
+    {
+      vtkObjectFactory::SetAllEnableFlags(0, "vtkRenderWindow");
+    }
+    vtkHeadlessRenderWindowFactory* factory = vtkHeadlessRenderWindowFactory::New();
+    vtkObjectFactory::RegisterFactory(factory);
+    factory->Delete();
+  }
+};
+const FactoryInstaller Installer;
+}
+
+//------------------------------------------------------------------------------
+vtkHeadlessRenderWindow* vtkHeadlessRenderWindow::New()
+{
+  std::string invalid;
+  phongvtk::headless::Request request =
+    phongvtk::headless::ParseRequest(std::getenv("PHONGVTK_HEADLESS"), &invalid);
+  if (!invalid.empty())
+  {
+    phongvtk::headless::WarnOnce(invalid);
+  }
+  if (request == phongvtk::headless::Request::Off)
+  {
+    request = phongvtk::headless::Request::Auto; // asked for by name: headless in any case
+  }
+  std::string osmesaProblem;
+  if (request != phongvtk::headless::Request::EGL)
+  {
+    phongvtk::headless::OSMesaLibrary::Get(&osmesaProblem);
+  }
+  const phongvtk::headless::Choice choice =
+    phongvtk::headless::ChooseWindow(request, false, osmesaProblem);
+  if (!choice.Warning.empty())
+  {
+    phongvtk::headless::WarnOnce(choice.Warning);
+  }
+  return NewHeadless(choice.Kind);
+}
+
+//------------------------------------------------------------------------------
+vtkHeadlessRenderWindow::vtkHeadlessRenderWindow()
+{
+  this->ShowWindow = false;
+  this->UseOffScreenBuffers = true;
+  // Reproducible images: the same scene gives the same pixels on every run and backend.
+  this->MultiSamples = 0;
+  this->ScreenSize[0] = this->ScreenSize[1] = 0;
+}
+
+//------------------------------------------------------------------------------
+vtkHeadlessRenderWindow::~vtkHeadlessRenderWindow()
+{
+  // The backend's destructor has destroyed the context (Finalize): renderers only let go.
+  vtkCollectionSimpleIterator it;
+  this->Renderers->InitTraversal(it);
+  while (vtkRenderer* renderer = this->Renderers->GetNextRenderer(it))
+  {
+    renderer->SetRenderWindow(nullptr);
+  }
+  if (CurrentOnThread == this)
+  {
+    CurrentOnThread = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkHeadlessRenderWindow::EnsureContext()
+{
+  if (!this->Initialized || !this->HasContext())
+  {
+    this->Initialize();
+  }
+  return this->Initialized && this->HasContext();
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::ReportContextProblem(const std::string& problem)
+{
+  // A scene renders many times: say each distinct problem once, not once a frame.
+  if (problem != this->ContextProblem)
+  {
+    this->ContextProblem = problem;
+    vtkErrorMacro(<< this->GetBackendName() << " render window: " << problem);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::Initialize()
+{
+  if (!this->HasContext())
+  {
+    std::string problem;
+    if (!this->CreateContext(problem))
+    {
+      this->ReportContextProblem("no OpenGL context: " + problem);
+      return;
+    }
+    this->RebindPending = true;
+  }
+  if (!this->Initialized)
+  {
+    this->MakeCurrent();
+    if (!this->IsCurrent())
+    {
+      return; // MakeCurrent said why
+    }
+    this->OpenGLInit();
+    if (this->Initialized)
+    {
+      this->ContextProblem.clear();
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::Finalize()
+{
+  this->DestroyWindow();
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::WindowRemap()
+{
+  this->Finalize();
+  this->Initialize();
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::CreateAWindow()
+{
+  this->Initialize();
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::DestroyWindow()
+{
+  if (this->HasContext())
+  {
+    this->MakeCurrent();
+    if (this->IsCurrent())
+    {
+      // Textures, buffers and programs of the window, its renderers and their props.
+      this->ReleaseGraphicsResources(this);
+    }
+    this->ReleaseCurrent();
+    this->DestroyContext();
+  }
+  this->Initialized = false;
+  this->Mapped = 0;
+  delete[] this->Capabilities;
+  this->Capabilities = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::Render()
+{
+  if (!this->EnsureContext())
+  {
+    return; // the reason has been reported; nothing to draw with
+  }
+  this->Superclass::Render();
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::Start()
+{
+  if (!this->EnsureContext())
+  {
+    return;
+  }
+  this->Superclass::Start();
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::Frame()
+{
+  if (!this->Initialized)
+  {
+    return;
+  }
+  this->MakeCurrent();
+  // Copies the rendered frame to the display framebuffer, which readback reads; there is no
+  // window-system buffer to blit to (UseOffScreenBuffers).
+  this->Superclass::Frame();
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::SetSize(int width, int height)
+{
+  if (this->Size[0] != width || this->Size[1] != height)
+  {
+    this->Superclass::SetSize(width, height);
+    if (this->HasContext())
+    {
+      this->ResizeContextBuffer(width, height);
+      this->RebindPending = true;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::MakeCurrent()
+{
+  if (!this->HasContext())
+  {
+    return;
+  }
+  // VTK calls this many times a frame: cheap when nothing changed.
+  if (!this->RebindPending && CurrentOnThread == this && this->IsContextBound())
+  {
+    return;
+  }
+  if (CurrentOnThread && CurrentOnThread != this)
+  {
+    CurrentOnThread->UnbindContext();
+  }
+  CurrentOnThread = nullptr;
+  std::string problem;
+  if (!this->BindContext(problem))
+  {
+    this->ReportContextProblem("cannot make the context current: " + problem);
+    return;
+  }
+  CurrentOnThread = this;
+  this->RebindPending = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::ReleaseCurrent()
+{
+  if (this->HasContext() && this->IsContextBound())
+  {
+    this->UnbindContext();
+  }
+  if (CurrentOnThread == this)
+  {
+    CurrentOnThread = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkHeadlessRenderWindow::IsCurrent()
+{
+  return this->HasContext() && this->IsContextBound();
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::SetForceMakeCurrent()
+{
+  this->RebindPending = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::PushContext()
+{
+  vtkHeadlessRenderWindow* previous =
+    CurrentOnThread && CurrentOnThread->IsContextBound() ? CurrentOnThread : nullptr;
+  this->ContextStack.push_back(previous);
+  if (previous != this)
+  {
+    this->MakeCurrent();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::PopContext()
+{
+  if (this->ContextStack.empty())
+  {
+    return;
+  }
+  vtkHeadlessRenderWindow* previous = this->ContextStack.back();
+  this->ContextStack.pop_back();
+  if (previous == this)
+  {
+    return;
+  }
+  if (previous)
+  {
+    previous->MakeCurrent();
+  }
+  else
+  {
+    this->ReleaseCurrent();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::SetUseOffScreenBuffers(bool)
+{
+  // A surfaceless context has no window-system framebuffer to show anything in.
+  this->UseOffScreenBuffers = true;
+}
+
+//------------------------------------------------------------------------------
+int* vtkHeadlessRenderWindow::GetScreenSize()
+{
+  this->ScreenSize[0] = this->Size[0];
+  this->ScreenSize[1] = this->Size[1];
+  return this->ScreenSize;
+}
+
+//------------------------------------------------------------------------------
+bool vtkHeadlessRenderWindow::WindowFramebufferBound()
+{
+  if (!this->Initialized || !this->HasContext())
+  {
+    return false;
+  }
+  this->MakeCurrent();
+  GLint binding = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &binding);
+  return binding == 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkHeadlessRenderWindow::GetColorBufferSizes(int* rgba)
+{
+  if (rgba && this->WindowFramebufferBound())
+  {
+    rgba[0] = rgba[1] = rgba[2] = rgba[3] = 8;
+    return 32;
+  }
+  return this->Superclass::GetColorBufferSizes(rgba);
+}
+
+//------------------------------------------------------------------------------
+int vtkHeadlessRenderWindow::GetDepthBufferSize()
+{
+  if (this->WindowFramebufferBound())
+  {
+    return 32;
+  }
+  return this->Superclass::GetDepthBufferSize();
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::OpenGLInitContext()
+{
+  this->ContextCreationTime.Modified();
+  if (this->Initialized)
+  {
+    return;
+  }
+  const GLenum result = glewInit();
+  // Debian's GLEW is a GLX build: glewInit() loads every OpenGL entry point (through glvnd, which
+  // routes them to whichever context is current) and then looks for the current GLX display,
+  // which a headless context never has.
+  this->GlewInitValid = result == GLEW_OK;
+#ifdef GLEW_ERROR_NO_GLX_DISPLAY
+  this->GlewInitValid = this->GlewInitValid || result == GLEW_ERROR_NO_GLX_DISPLAY;
+#endif
+  if (!this->GlewInitValid)
+  {
+    this->ReportContextProblem(std::string("GLEW could not be initialized: ") +
+      reinterpret_cast<const char*>(glewGetErrorString(result)));
+    return;
+  }
+  if (!GLEW_VERSION_3_2)
+  {
+    this->GlewInitValid = false;
+    const GLubyte* version = glGetString(GL_VERSION);
+    this->ReportContextProblem(std::string("VTK needs OpenGL 3.2, the context has ") +
+      (version ? reinterpret_cast<const char*>(version) : "none"));
+    return;
+  }
+  this->Initialized = true;
+
+  // As vtkOpenGLRenderWindow does once per context: the line widths the implementation draws.
+  GLfloat range[2] = { 1.0f, 1.0f };
+  this->MaximumHardwareLineWidth = 1.0;
+  glGetFloatv(
+    this->LineSmoothing ? GL_SMOOTH_LINE_WIDTH_RANGE : GL_ALIASED_LINE_WIDTH_RANGE, range);
+  if (glGetError() == GL_NO_ERROR)
+  {
+    this->MaximumHardwareLineWidth = range[1];
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkHeadlessRenderWindow::ReadPixels(
+  const vtkRecti& rect, int front, int glFormat, int glType, void* data, int right)
+{
+  if (!this->Initialized || !this->HasContext())
+  {
+    vtkErrorMacro(<< "Nothing to read: the window has not rendered (no OpenGL context).");
+    return VTK_ERROR;
+  }
+  return this->Superclass::ReadPixels(rect, front, glFormat, glType, data, right);
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Backend: " << this->GetBackendName() << "\n";
+  os << indent << "HasContext: " << (this->HasContext() ? "yes" : "no") << "\n";
+  os << indent << "RebindPending: " << (this->RebindPending ? "yes" : "no") << "\n";
+  os << indent
+     << "ContextProblem: " << (this->ContextProblem.empty() ? "(none)" : this->ContextProblem)
+     << "\n";
+  os << indent << "ContextStack depth: " << this->ContextStack.size() << "\n";
+}
