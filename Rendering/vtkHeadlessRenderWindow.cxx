@@ -6,10 +6,17 @@
 #include "vtkHeadlessEGLRenderWindow.h"
 #include "vtkHeadlessOSMesaRenderWindow.h"
 
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOverrideInformation.h"
+#include "vtkOverrideInformationCollection.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
 #include "vtkVersionMacros.h"
+#include "vtkWeakPointer.h"
+
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -29,10 +36,51 @@ vtkHeadlessRenderWindow* NewHeadless(Window kind)
   return vtkHeadlessOSMesaRenderWindow::New();
 }
 
+// vtkObjectFactory asks factories in registration order, so an override of vtkRenderWindow
+// registered before this module was loaded (VTK's RenderingOpenGL2 is usually initialised first)
+// would always make the X window. Those overrides are switched off when the module is installed
+// and stand in for "VTK's own window": CreateVTKDefault switches them back on for one call.
+struct DeferredOverride
+{
+  vtkWeakPointer<vtkObjectFactory> Factory;
+  std::string Subclass;
+};
+std::vector<DeferredOverride>& DeferredOverrides()
+{
+  static std::vector<DeferredOverride> deferred;
+  return deferred;
+}
+thread_local bool CreatingVTKDefault = false;
+
+vtkObject* CreateVTKDefault()
+{
+  if (CreatingVTKDefault)
+  {
+    return nullptr; // the deferred factory declined: let the later ones answer
+  }
+  CreatingVTKDefault = true;
+  vtkObject* window = nullptr;
+  for (const DeferredOverride& d : DeferredOverrides())
+  {
+    if (!window && d.Factory)
+    {
+      d.Factory->SetEnableFlag(1, "vtkRenderWindow", d.Subclass.c_str());
+      window = vtkObjectFactory::CreateInstance("vtkRenderWindow");
+      d.Factory->SetEnableFlag(0, "vtkRenderWindow", d.Subclass.c_str());
+    }
+  }
+  CreatingVTKDefault = false;
+  return window;
+}
+
 // The override of vtkRenderWindow: a headless window when the environment asks for one, else
-// nothing, so that the next factory (VTK's X window) answers.
+// VTK's own (nothing, when no factory before this one made it: the later ones answer).
 vtkObject* CreateRenderWindow()
 {
+  if (CreatingVTKDefault)
+  {
+    return nullptr;
+  }
   const phongvtk::headless::Choice choice = phongvtk::headless::ChooseWindowFromEnvironment();
   if (!choice.Warning.empty())
   {
@@ -40,7 +88,7 @@ vtkObject* CreateRenderWindow()
   }
   if (choice.Kind == Window::VTKDefault)
   {
-    return nullptr;
+    return CreateVTKDefault();
   }
   return NewHeadless(choice.Kind);
 }
@@ -74,19 +122,27 @@ private:
 };
 
 // The override exists in every process that loads the module: C++ programs with or without
-// vtk_module_autoinit, Python after `import phongvtk`, ParaView after loading the plugin.
-// vtkObjectFactory asks factories in registration order. One registered earlier (VTK's
-// RenderingOpenGL2 in a Python session that imported it first) would always make the X window,
-// so its override is switched off when this process renders headless.
+// vtk_module_autoinit, Python after `import phongvtk`, ParaView after loading the plugin. It
+// decides nothing when it is installed (no probing at load time): the choice is made at each
+// vtkRenderWindow::New().
 struct FactoryInstaller
 {
   FactoryInstaller()
   {
-    vtkObjectFactory::GetRegisteredFactories(); // creates the registry
-    if (vtkObjectFactory::HasOverrideAny("vtkRenderWindow") &&
-      phongvtk::headless::ChooseWindowFromEnvironment().Kind != Window::VTKDefault)
+    vtkObjectFactory::GetRegisteredFactories(); // creates the registry if needed
+    vtkNew<vtkOverrideInformationCollection> overrides;
+    vtkObjectFactory::GetOverrideInformation("vtkRenderWindow", overrides);
+    vtkCollectionSimpleIterator it;
+    overrides->InitTraversal(it);
+    while (vtkOverrideInformation* info = overrides->GetNextOverrideInformation(it))
     {
-      vtkObjectFactory::SetAllEnableFlags(0, "vtkRenderWindow");
+      vtkObjectFactory* factory = info->GetObjectFactory();
+      const char* subclass = info->GetClassOverrideWithName();
+      if (factory && subclass && factory->GetEnableFlag("vtkRenderWindow", subclass))
+      {
+        factory->SetEnableFlag(0, "vtkRenderWindow", subclass);
+        DeferredOverrides().push_back({ factory, subclass });
+      }
     }
     vtkHeadlessRenderWindowFactory* factory = vtkHeadlessRenderWindowFactory::New();
     vtkObjectFactory::RegisterFactory(factory);
