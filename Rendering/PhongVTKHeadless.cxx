@@ -2,14 +2,20 @@
 
 #include "vtkObjectFactory.h" // for vtkGenericWarningMacro
 
+#include <EGL/egl.h>
+#include <GL/glx.h>
 #include <GL/osmesa.h>
 #include <X11/Xlib.h>
 
 #include <dlfcn.h>
 
+#include <atomic>
 #include <cctype>
+#include <map>
+#include <memory>
 #include <mutex>
 #include <set>
+#include <thread>
 
 namespace
 {
@@ -274,6 +280,24 @@ bool XDisplayAvailable()
 }
 
 //------------------------------------------------------------------------------
+void ReleaseThreadContext()
+{
+  if (const OSMesaLibrary* osmesa = OSMesaLibrary::IfLoaded())
+  {
+    osmesa->Unbind();
+  }
+  // libEGL and libGLX answer only for a context they made current themselves.
+  if (eglGetCurrentContext() != EGL_NO_CONTEXT)
+  {
+    eglMakeCurrent(eglGetCurrentDisplay(), EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  }
+  if (glXGetCurrentContext())
+  {
+    glXMakeCurrent(glXGetCurrentDisplay(), None, nullptr);
+  }
+}
+
+//------------------------------------------------------------------------------
 void WarnOnce(const std::string& message)
 {
   static std::mutex mutex;
@@ -289,6 +313,18 @@ void WarnOnce(const std::string& message)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+std::atomic<const OSMesaLibrary*> LoadedLibrary{ nullptr };
+}
+
+//------------------------------------------------------------------------------
+const OSMesaLibrary* OSMesaLibrary::IfLoaded()
+{
+  return LoadedLibrary.load();
+}
+
+//------------------------------------------------------------------------------
 const OSMesaLibrary* OSMesaLibrary::Get(std::string* problem)
 {
   static std::once_flag once;
@@ -300,6 +336,10 @@ const OSMesaLibrary* OSMesaLibrary::Get(std::string* problem)
     {
       loadProblem = entry.Load();
       library.E = &entry;
+      if (loadProblem.empty())
+      {
+        LoadedLibrary.store(&library);
+      }
     });
   if (!loadProblem.empty())
   {
@@ -328,21 +368,53 @@ osmesa_context* OSMesaLibrary::CreateContext(std::string* problem) const
 }
 
 //------------------------------------------------------------------------------
-void OSMesaLibrary::DestroyContext(osmesa_context* context) const
+namespace
 {
-  if (context)
-  {
-    if (this->E->GetCurrentContext() == context)
-    {
-      this->Unbind();
-    }
-    this->E->DestroyContext(context);
-  }
+// Which thread has each OSMesa context current. Mesa keeps a pointer to a thread's current
+// context: destroying it while it is current on another thread would leave that thread pointing
+// at freed memory (its next OpenGL or OSMesa call crashes). Such a context is orphaned instead
+// and destroyed when its thread releases it (next MakeCurrent, ReleaseCurrent or thread end).
+std::mutex BindingMutex;
+std::map<osmesa_context*, std::thread::id> BoundOn;
+std::set<osmesa_context*> Orphans;
+// Each context's window-system framebuffer: 1 x 1 RGBA, never drawn into (VTK renders into
+// framebuffer objects), yet written when a context is released. It lives as long as the context,
+// which may outlive its window (an orphan).
+std::map<osmesa_context*, std::unique_ptr<unsigned char[]>> ClientBuffers;
+
+void DestroyNow(void (*destroy)(osmesa_context*), osmesa_context* context)
+{
+  destroy(context);
+  std::lock_guard<std::mutex> lock(BindingMutex);
+  ClientBuffers.erase(context);
+}
 }
 
 //------------------------------------------------------------------------------
-bool OSMesaLibrary::Bind(
-  osmesa_context* context, void* buffer, int width, int height, std::string* problem) const
+void OSMesaLibrary::DestroyContext(osmesa_context* context) const
+{
+  if (!context)
+  {
+    return;
+  }
+  {
+    std::lock_guard<std::mutex> lock(BindingMutex);
+    auto it = BoundOn.find(context);
+    if (it != BoundOn.end() && it->second != std::this_thread::get_id())
+    {
+      Orphans.insert(context);
+      return;
+    }
+  }
+  if (this->E->GetCurrentContext() == context)
+  {
+    this->Unbind();
+  }
+  DestroyNow(this->E->DestroyContext, context);
+}
+
+//------------------------------------------------------------------------------
+bool OSMesaLibrary::Bind(osmesa_context* context, std::string* problem) const
 {
   GLdispatchThreadState* current = this->E->GetCurrentThreadState();
   if (current && current != &OSMesaThreadState)
@@ -354,10 +426,35 @@ bool OSMesaLibrary::Bind(
       ") is current on this thread";
     return false;
   }
-  if (!this->E->MakeCurrent(context, buffer, GL_UNSIGNED_BYTE, width, height))
+  void* buffer = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(BindingMutex);
+    auto it = BoundOn.find(context);
+    if (it != BoundOn.end() && it->second != std::this_thread::get_id())
+    {
+      *problem = "the context is current on another thread (ReleaseCurrent it there first)";
+      return false;
+    }
+    std::unique_ptr<unsigned char[]>& pixel = ClientBuffers[context];
+    if (!pixel)
+    {
+      pixel.reset(new unsigned char[4]());
+    }
+    buffer = pixel.get();
+  }
+  osmesa_context* previous = this->E->GetCurrentContext();
+  if (!this->E->MakeCurrent(context, buffer, GL_UNSIGNED_BYTE, 1, 1))
   {
     *problem = "OSMesaMakeCurrent failed";
     return false;
+  }
+  {
+    std::lock_guard<std::mutex> lock(BindingMutex);
+    if (previous && previous != context)
+    {
+      BoundOn.erase(previous);
+    }
+    BoundOn[context] = std::this_thread::get_id();
   }
   if (!current &&
     !this->E->DispatchMakeCurrent(&OSMesaThreadState, this->E->Table, this->E->VendorID, nullptr))
@@ -372,9 +469,19 @@ bool OSMesaLibrary::Bind(
 //------------------------------------------------------------------------------
 void OSMesaLibrary::Unbind() const
 {
-  if (this->E->GetCurrentContext())
+  if (osmesa_context* current = this->E->GetCurrentContext())
   {
     this->E->MakeCurrent(nullptr, nullptr, 0, 0, 0);
+    bool orphan = false;
+    {
+      std::lock_guard<std::mutex> lock(BindingMutex);
+      BoundOn.erase(current);
+      orphan = Orphans.erase(current) > 0;
+    }
+    if (orphan)
+    {
+      DestroyNow(this->E->DestroyContext, current);
+    }
   }
   if (this->OwnsThreadDispatch())
   {

@@ -59,6 +59,12 @@ VTKPHONGVTKRENDERING_EXPORT Choice ChooseWindowFromEnvironment();
 /// Whether DISPLAY names an X server that accepts a connection (probed once per DISPLAY value).
 VTKPHONGVTKRENDERING_EXPORT bool XDisplayAvailable();
 
+/// Releases the OpenGL context current on this thread, whichever library made it current (OSMesa
+/// through PhongVTK, EGL, GLX); nothing when none is. Native state only: no window object needs
+/// to be alive. glvnd lets one window-system library at a time have a context current on a
+/// thread, so binding a context of another library needs this first.
+VTKPHONGVTKRENDERING_EXPORT void ReleaseThreadContext();
+
 /// Emits `message` as a VTK warning the first time it is seen in this process.
 VTKPHONGVTKRENDERING_EXPORT void WarnOnce(const std::string& message);
 
@@ -76,16 +82,19 @@ class VTKPHONGVTKRENDERING_EXPORT OSMesaLibrary
 public:
   /// The library, or null with the reason in `*problem`.
   static const OSMesaLibrary* Get(std::string* problem);
+  /// The library if an earlier Get() loaded it, else null (never loads).
+  static const OSMesaLibrary* IfLoaded();
 
   /// A core-profile (>= 3.2) RGBA context without depth or stencil in its own framebuffer: VTK
   /// renders into framebuffer objects. Null with a reason on failure.
   osmesa_context* CreateContext(std::string* problem) const;
+  /// Destroys the context, or, when it is current on another thread, as soon as that thread
+  /// releases it (Mesa would otherwise leave that thread pointing at freed memory).
   void DestroyContext(osmesa_context* context) const;
 
-  /// Makes `context` current on this thread, drawing into `buffer` (width x height RGBA bytes),
-  /// and routes glvnd's dispatch to it. The caller has released any other context first.
-  bool Bind(
-    osmesa_context* context, void* buffer, int width, int height, std::string* problem) const;
+  /// Makes `context` current on this thread and routes glvnd's dispatch to it. The caller has
+  /// released any other context first. Fails for a context current on another thread.
+  bool Bind(osmesa_context* context, std::string* problem) const;
   /// Releases the thread's OSMesa context and glvnd's dispatch to it, if they are current.
   void Unbind() const;
   /// Whether `context` is current on this thread and glvnd dispatches to it.

@@ -4,8 +4,6 @@
 
 #include "vtkObjectFactory.h"
 
-#include <algorithm>
-
 vtkStandardNewMacro(vtkHeadlessOSMesaRenderWindow);
 
 using phongvtk::headless::OSMesaLibrary;
@@ -44,7 +42,6 @@ bool vtkHeadlessOSMesaRenderWindow::CreateContext(std::string& problem)
   {
     return false;
   }
-  this->ResizeContextBuffer(this->Size[0], this->Size[1]);
   return true;
 }
 
@@ -56,24 +53,12 @@ void vtkHeadlessOSMesaRenderWindow::DestroyContext()
     OSMesaLibrary::Get(nullptr)->DestroyContext(this->Context);
     this->Context = nullptr;
   }
-  std::vector<unsigned char>().swap(this->Buffer);
-  this->BufferSize[0] = this->BufferSize[1] = 0;
-}
-
-//------------------------------------------------------------------------------
-void vtkHeadlessOSMesaRenderWindow::ResizeContextBuffer(int width, int height)
-{
-  // VTK's Start() renders at least 300 x 300 when no size is set.
-  this->BufferSize[0] = std::max(width > 0 ? width : 300, 1);
-  this->BufferSize[1] = std::max(height > 0 ? height : 300, 1);
-  this->Buffer.assign(4 * static_cast<size_t>(this->BufferSize[0]) * this->BufferSize[1], 0);
 }
 
 //------------------------------------------------------------------------------
 bool vtkHeadlessOSMesaRenderWindow::BindContext(std::string& problem)
 {
-  return OSMesaLibrary::Get(nullptr)->Bind(
-    this->Context, this->Buffer.data(), this->BufferSize[0], this->BufferSize[1], &problem);
+  return OSMesaLibrary::Get(nullptr)->Bind(this->Context, &problem);
 }
 
 //------------------------------------------------------------------------------
@@ -93,5 +78,4 @@ void vtkHeadlessOSMesaRenderWindow::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Context: " << static_cast<void*>(this->Context) << "\n";
-  os << indent << "BufferSize: " << this->BufferSize[0] << " x " << this->BufferSize[1] << "\n";
 }

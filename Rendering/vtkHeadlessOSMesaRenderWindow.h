@@ -10,8 +10,10 @@
  * instead with one warning; a vtkHeadlessOSMesaRenderWindow made by name reports the reason as
  * an error when it would render and draws nothing.
  *
- * OSMesa draws into a client memory buffer of the window's size; VTK renders into its own
- * framebuffer objects and readback reads those.
+ * VTK renders into its own framebuffer objects and readback reads those: the client buffer
+ * OSMesa insists on for its window-system framebuffer is never drawn into and stays 1 x 1.
+ * Deleting the window on another thread than the one it is current on is safe: the context is
+ * destroyed when that thread releases it.
  *
  * @sa vtkHeadlessRenderWindow vtkHeadlessEGLRenderWindow
  */
@@ -22,7 +24,6 @@
 #include "vtkPhongVTKRenderingModule.h" // for export macro
 
 #include <string> // for std::string
-#include <vector> // for std::vector
 
 struct osmesa_context;
 
@@ -54,15 +55,12 @@ protected:
   bool BindContext(std::string& problem) override;
   void UnbindContext() override;
   bool IsContextBound() override;
-  void ResizeContextBuffer(int width, int height) override;
 
 private:
   vtkHeadlessOSMesaRenderWindow(const vtkHeadlessOSMesaRenderWindow&) = delete;
   void operator=(const vtkHeadlessOSMesaRenderWindow&) = delete;
 
   osmesa_context* Context = nullptr;
-  std::vector<unsigned char> Buffer; // OSMesa's window-system framebuffer (RGBA)
-  int BufferSize[2] = { 0, 0 };
 };
 
 #endif

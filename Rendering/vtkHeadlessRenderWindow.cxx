@@ -15,15 +15,30 @@
 #include "vtkVersionMacros.h"
 #include "vtkWeakPointer.h"
 
+#include <mutex>
 #include <string>
 #include <vector>
 
 namespace
 {
-// The headless window whose context this thread last made current: binding another one releases
-// it first (an OSMesa and an EGL context cannot both be current, and glvnd refuses to switch
-// between window-system libraries without a release).
-thread_local vtkHeadlessRenderWindow* CurrentOnThread = nullptr;
+// The headless window whose context this thread made current last (for PushContext), weak: a
+// window may be deleted anywhere, on any thread.
+thread_local vtkWeakPointer<vtkHeadlessRenderWindow> CurrentOnThread;
+
+// A thread that ends with a context current would keep it bound forever (EGL contexts stay
+// current to a dead thread): release it when a thread that bound one ends.
+struct ThreadContextGuard
+{
+  bool Bound = false;
+  ~ThreadContextGuard()
+  {
+    if (this->Bound)
+    {
+      phongvtk::headless::ReleaseThreadContext();
+    }
+  }
+};
+thread_local ThreadContextGuard ThreadGuard;
 
 using phongvtk::headless::Window;
 
@@ -51,6 +66,7 @@ std::vector<DeferredOverride>& DeferredOverrides()
   return deferred;
 }
 thread_local bool CreatingVTKDefault = false;
+std::mutex DeferredMutex; // the enable flags are shared by every thread
 
 vtkObject* CreateVTKDefault()
 {
@@ -58,6 +74,7 @@ vtkObject* CreateVTKDefault()
   {
     return nullptr; // the deferred factory declined: let the later ones answer
   }
+  std::lock_guard<std::mutex> lock(DeferredMutex);
   CreatingVTKDefault = true;
   vtkObject* window = nullptr;
   for (const DeferredOverride& d : DeferredOverrides())
@@ -121,35 +138,49 @@ private:
   void operator=(const vtkHeadlessRenderWindowFactory&) = delete;
 };
 
-// The override exists in every process that loads the module: C++ programs with or without
-// vtk_module_autoinit, Python after `import phongvtk`, ParaView after loading the plugin. It
-// decides nothing when it is installed (no probing at load time): the choice is made at each
+// The override exists in every process that loads the module: C++ programs (with
+// vtk_module_autoinit, which also keeps the library linked under --as-needed, or linking it
+// otherwise), Python after `import phongvtk`, ParaView after loading the plugin. It decides
+// nothing when it is installed (no probing at load time): the choice is made at each
 // vtkRenderWindow::New().
+void InstallFactory()
+{
+  static std::once_flag once;
+  std::call_once(once,
+    []
+    {
+      vtkObjectFactory::GetRegisteredFactories(); // creates the registry if needed
+      vtkNew<vtkOverrideInformationCollection> overrides;
+      vtkObjectFactory::GetOverrideInformation("vtkRenderWindow", overrides);
+      vtkCollectionSimpleIterator it;
+      overrides->InitTraversal(it);
+      while (vtkOverrideInformation* info = overrides->GetNextOverrideInformation(it))
+      {
+        vtkObjectFactory* factory = info->GetObjectFactory();
+        const char* subclass = info->GetClassOverrideWithName();
+        if (factory && subclass && factory->GetEnableFlag("vtkRenderWindow", subclass))
+        {
+          factory->SetEnableFlag(0, "vtkRenderWindow", subclass);
+          DeferredOverrides().push_back({ factory, subclass });
+        }
+      }
+      vtkHeadlessRenderWindowFactory* factory = vtkHeadlessRenderWindowFactory::New();
+      vtkObjectFactory::RegisterFactory(factory);
+      factory->Delete();
+    });
+}
+
 struct FactoryInstaller
 {
-  FactoryInstaller()
-  {
-    vtkObjectFactory::GetRegisteredFactories(); // creates the registry if needed
-    vtkNew<vtkOverrideInformationCollection> overrides;
-    vtkObjectFactory::GetOverrideInformation("vtkRenderWindow", overrides);
-    vtkCollectionSimpleIterator it;
-    overrides->InitTraversal(it);
-    while (vtkOverrideInformation* info = overrides->GetNextOverrideInformation(it))
-    {
-      vtkObjectFactory* factory = info->GetObjectFactory();
-      const char* subclass = info->GetClassOverrideWithName();
-      if (factory && subclass && factory->GetEnableFlag("vtkRenderWindow", subclass))
-      {
-        factory->SetEnableFlag(0, "vtkRenderWindow", subclass);
-        DeferredOverrides().push_back({ factory, subclass });
-      }
-    }
-    vtkHeadlessRenderWindowFactory* factory = vtkHeadlessRenderWindowFactory::New();
-    vtkObjectFactory::RegisterFactory(factory);
-    factory->Delete();
-  }
+  FactoryInstaller() { InstallFactory(); }
 };
 const FactoryInstaller Installer;
+}
+
+// VTK's module autoinit (the module IMPLEMENTS VTK::RenderingCore).
+VTKPHONGVTKRENDERING_EXPORT void vtkPhongVTKRendering_AutoInit_Construct()
+{
+  InstallFactory();
 }
 
 //------------------------------------------------------------------------------
@@ -199,10 +230,6 @@ vtkHeadlessRenderWindow::~vtkHeadlessRenderWindow()
   while (vtkRenderer* renderer = this->Renderers->GetNextRenderer(it))
   {
     renderer->SetRenderWindow(nullptr);
-  }
-  if (CurrentOnThread == this)
-  {
-    CurrentOnThread = nullptr;
   }
 }
 
@@ -301,13 +328,24 @@ void vtkHeadlessRenderWindow::Render()
   {
     return; // the reason has been reported; nothing to draw with
   }
+  this->MakeCurrent();
+  if (!this->IsCurrent())
+  {
+    return; // MakeCurrent said why: no GL call may reach another context, or none
+  }
   this->Superclass::Render();
+  this->ReleaseForGLXWindows();
 }
 
 //------------------------------------------------------------------------------
 void vtkHeadlessRenderWindow::Start()
 {
   if (!this->EnsureContext())
+  {
+    return;
+  }
+  this->MakeCurrent();
+  if (!this->IsCurrent())
   {
     return;
   }
@@ -328,20 +366,6 @@ void vtkHeadlessRenderWindow::Frame()
 }
 
 //------------------------------------------------------------------------------
-void vtkHeadlessRenderWindow::SetSize(int width, int height)
-{
-  if (this->Size[0] != width || this->Size[1] != height)
-  {
-    this->Superclass::SetSize(width, height);
-    if (this->HasContext())
-    {
-      this->ResizeContextBuffer(width, height);
-      this->RebindPending = true;
-    }
-  }
-}
-
-//------------------------------------------------------------------------------
 void vtkHeadlessRenderWindow::MakeCurrent()
 {
   if (!this->HasContext())
@@ -349,23 +373,34 @@ void vtkHeadlessRenderWindow::MakeCurrent()
     return;
   }
   // VTK calls this many times a frame: cheap when nothing changed.
-  if (!this->RebindPending && CurrentOnThread == this && this->IsContextBound())
+  if (!this->RebindPending && this->IsContextBound())
   {
+    this->RecordCurrent();
     return;
   }
-  if (CurrentOnThread && CurrentOnThread != this)
-  {
-    CurrentOnThread->UnbindContext();
-  }
-  CurrentOnThread = nullptr;
+  // Whatever is current on this thread, whoever made it so.
+  phongvtk::headless::ReleaseThreadContext();
   std::string problem;
   if (!this->BindContext(problem))
   {
     this->ReportContextProblem("cannot make the context current: " + problem);
     return;
   }
-  CurrentOnThread = this;
+  this->RecordCurrent();
+  ThreadGuard.Bound = true;
   this->RebindPending = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::RecordCurrent()
+{
+  // VTK clears an object's weak pointers when its count drops to zero, before the destructors
+  // run (which still make the context current to release resources): a weak pointer taken then
+  // would never be cleared.
+  if (CurrentOnThread != this && this->GetReferenceCount() > 0)
+  {
+    CurrentOnThread = this;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -375,9 +410,14 @@ void vtkHeadlessRenderWindow::ReleaseCurrent()
   {
     this->UnbindContext();
   }
-  if (CurrentOnThread == this)
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessRenderWindow::ReleaseForGLXWindows()
+{
+  if (phongvtk::headless::XDisplayAvailable())
   {
-    CurrentOnThread = nullptr;
+    this->ReleaseCurrent();
   }
 }
 
@@ -397,8 +437,8 @@ void vtkHeadlessRenderWindow::SetForceMakeCurrent()
 void vtkHeadlessRenderWindow::PushContext()
 {
   vtkHeadlessRenderWindow* previous =
-    CurrentOnThread && CurrentOnThread->IsContextBound() ? CurrentOnThread : nullptr;
-  this->ContextStack.push_back(previous);
+    CurrentOnThread && CurrentOnThread->IsContextBound() ? CurrentOnThread.GetPointer() : nullptr;
+  this->ContextStack.emplace_back(previous);
   if (previous != this)
   {
     this->MakeCurrent();
@@ -412,6 +452,7 @@ void vtkHeadlessRenderWindow::PopContext()
   {
     return;
   }
+  // Null also when the window that was current has been deleted since.
   vtkHeadlessRenderWindow* previous = this->ContextStack.back();
   this->ContextStack.pop_back();
   if (previous == this)
@@ -529,7 +570,9 @@ int vtkHeadlessRenderWindow::ReadPixels(
     vtkErrorMacro(<< "Nothing to read: the window has not rendered (no OpenGL context).");
     return VTK_ERROR;
   }
-  return this->Superclass::ReadPixels(rect, front, glFormat, glType, data, right);
+  const int result = this->Superclass::ReadPixels(rect, front, glFormat, glType, data, right);
+  this->ReleaseForGLXWindows();
+  return result;
 }
 
 //------------------------------------------------------------------------------

@@ -11,7 +11,11 @@
  *
  * Everything else is a vtkOpenGLRenderWindow: several windows at once (each MakeCurrent switches
  * the thread's context, across backends too), SetSize, Finalize and re-Initialize, readback with
- * vtkWindowToImageFilter or GetPixelData (from the last frame; reading renders nothing).
+ * vtkWindowToImageFilter or GetPixelData (from the last frame; reading renders nothing), use
+ * from another thread after ReleaseCurrent (a thread that ends releases what it had current).
+ * When an X server is reachable a headless window releases its context after each Render and
+ * readback, so that VTK's GLX windows on the same thread can make theirs current (glvnd allows
+ * one window-system library at a time per thread).
  * Multisampling is off by default so that images are reproducible; ShowWindow is ignored and
  * UseOffScreenBuffers stays on: there is no screen.
  *
@@ -35,6 +39,8 @@
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPhongVTKRenderingModule.h" // for export macro
+
+#include "vtkWeakPointer.h" // for the context stack
 
 #include <string> // for std::string
 #include <vector> // for std::vector
@@ -72,14 +78,6 @@ public:
   void Render() override;
   void Start() override;
   void Frame() override;
-
-  ///@{
-  /**
-   * Set the size of the window in pixels; the framebuffers follow at the next render.
-   */
-  void SetSize(int width, int height) override;
-  void SetSize(int a[2]) override { this->SetSize(a[0], a[1]); }
-  ///@}
 
   ///@{
   /**
@@ -148,7 +146,6 @@ protected:
   virtual bool BindContext(std::string& problem) = 0;
   virtual void UnbindContext() = 0;
   virtual bool IsContextBound() = 0;
-  virtual void ResizeContextBuffer(int vtkNotUsed(width), int vtkNotUsed(height)) {}
   ///@}
 
   /**
@@ -167,8 +164,14 @@ private:
   // Whether the window-system framebuffer (never rendered into) is bound for drawing.
   bool WindowFramebufferBound();
 
+  // Remembers this window as the thread's current one (for PushContext).
+  void RecordCurrent();
+  // With an X server reachable, VTK's GLX windows may share the thread: glvnd lets them bind
+  // their context only when no other window-system library has one current.
+  void ReleaseForGLXWindows();
+
   std::string ContextProblem;
-  std::vector<vtkHeadlessRenderWindow*> ContextStack;
+  std::vector<vtkWeakPointer<vtkHeadlessRenderWindow>> ContextStack;
   int ScreenSize[2];
 };
 

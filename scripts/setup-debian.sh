@@ -41,6 +41,8 @@ packages=(
   "${flavour[@]}"
   # headless rendering: OSMesa and EGL (Mesa llvmpipe), no X server
   libosmesa6-dev libegl-dev libgl-dev libx11-dev libglew-dev
+  # an X server for the tests that check coexistence with VTK's own GLX window
+  xvfb
   # exact arithmetic (EXACT fallback, test reference), tests, benchmarks
   libgmp-dev libgtest-dev libbenchmark-dev python3-pytest python3-numpy
   # real meshes nobody here wrote (CGAL's sample data)

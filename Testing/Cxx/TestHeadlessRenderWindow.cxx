@@ -15,10 +15,16 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace
 {
@@ -478,8 +484,169 @@ TEST_P(HeadlessLifecycle, ReadbackDoesNotRenderAgain)
   EXPECT_EQ(MaxAbsDifference(first, phongvtk::testing::FromImageData(grab->GetOutput())), 0);
 }
 
+TEST_P(HeadlessLifecycle, PushAndPopSurviveADeletedWindow)
+{
+  auto window = this->NewWindow();
+  auto* a = vtkHeadlessRenderWindow::SafeDownCast(window);
+  const Image expected = RenderScene(a);
+  vtkSmartPointer<vtkRenderWindow> held = this->NewWindow();
+  vtkHeadlessRenderWindow* b = vtkHeadlessRenderWindow::SafeDownCast(held);
+  AddScene(b);
+  b->Render();
+  // b is current when a pushes; b goes away before a pops.
+  b->MakeCurrent();
+  a->PushContext();
+  held = nullptr; // deletes b
+  a->PopContext();
+  a->Render();
+  EXPECT_EQ(MaxAbsDifference(expected, Capture(a)), 0);
+}
+
+TEST_P(HeadlessLifecycle, DeletedOnAnotherThread)
+{
+  vtkSmartPointer<vtkRenderWindow> a = this->NewWindow();
+  RenderScene(a);
+  std::thread([&a] { a = nullptr; }).join(); // the last reference goes on the other thread
+  auto b = this->NewWindow();
+  ExpectLambertSphere(RenderScene(b));
+}
+
+TEST_P(HeadlessLifecycle, AThreadThatEndsReleasesItsContext)
+{
+  // A worker renders and ends without releasing: the window renders on the main thread after.
+  auto window = this->NewWindow();
+  AddScene(window);
+  std::thread([&window] { window->Render(); }).join();
+  MessageCatcher messages;
+  window->Render();
+  ExpectLambertSphere(Capture(window));
+  EXPECT_TRUE(messages.Errors().empty()) << messages.Errors()[0];
+}
+
+TEST_P(HeadlessLifecycle, HandedToAnotherThreadAfterReleaseCurrent)
+{
+  auto window = this->NewWindow();
+  const Image expected = RenderScene(window);
+  window->ReleaseCurrent();
+  Image there;
+  std::thread(
+    [&]
+    {
+      window->Render();
+      there = Capture(window);
+      window->ReleaseCurrent();
+    })
+    .join();
+  EXPECT_EQ(MaxAbsDifference(expected, there), 0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, HeadlessLifecycle, ::testing::Values("OSMesa", "EGL"),
   [](const ::testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
+
+//------------------------------------------------------------------------------
+// With an X server (Xvfb, started here when installed): `auto` keeps VTK's own window, and GLX and
+// headless windows take turns on one thread.
+class Xvfb
+{
+public:
+  Xvfb()
+  {
+    if (access("/usr/bin/Xvfb", X_OK) != 0)
+    {
+      return;
+    }
+    for (int n = 70; n < 90; ++n)
+    {
+      const std::string lock = "/tmp/.X" + std::to_string(n) + "-lock";
+      const std::string socket = "/tmp/.X11-unix/X" + std::to_string(n);
+      if (access(lock.c_str(), F_OK) == 0 || access(socket.c_str(), F_OK) == 0)
+      {
+        continue;
+      }
+      const std::string display = ":" + std::to_string(n);
+      this->Pid = fork();
+      if (this->Pid == 0)
+      {
+        // -noreset: a server resets when its last client leaves and refuses connections meanwhile
+        execl("/usr/bin/Xvfb", "Xvfb", display.c_str(), "-noreset", "-nolisten", "tcp", "-screen",
+          "0", "640x480x24", static_cast<char*>(nullptr));
+        _exit(127);
+      }
+      for (int wait = 0; wait < 100 && access(socket.c_str(), F_OK) != 0; ++wait)
+      {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      }
+      if (access(socket.c_str(), F_OK) == 0)
+      {
+        this->Display = display;
+      }
+      return;
+    }
+  }
+  ~Xvfb()
+  {
+    if (this->Pid > 0)
+    {
+      kill(this->Pid, SIGTERM);
+      waitpid(this->Pid, nullptr, 0);
+    }
+  }
+  Xvfb(const Xvfb&) = delete;
+  void operator=(const Xvfb&) = delete;
+  std::string Display;
+
+private:
+  pid_t Pid = -1;
+};
+
+class WithXServer : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    unsetenv("PHONGVTK_HEADLESS");
+    if (this->Server.Display.empty())
+    {
+      GTEST_SKIP() << "Xvfb is not installed (Debian package xvfb)";
+    }
+    setenv("DISPLAY", this->Server.Display.c_str(), 1);
+  }
+  void TearDown() override { unsetenv("DISPLAY"); }
+  Xvfb Server;
+};
+
+TEST_F(WithXServer, AutoKeepsVTKsOwnWindow)
+{
+  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
+  EXPECT_STREQ(window->GetClassName(), "vtkXOpenGLRenderWindow");
+  setenv("PHONGVTK_HEADLESS", "osmesa", 1);
+  window = vtkSmartPointer<vtkRenderWindow>::New();
+  EXPECT_STREQ(window->GetClassName(), "vtkHeadlessOSMesaRenderWindow");
+}
+
+TEST_F(WithXServer, GLXAndHeadlessWindowsTakeTurnsOnOneThread)
+{
+  vtkSmartPointer<vtkRenderWindow> x = vtkSmartPointer<vtkRenderWindow>::New();
+  ASSERT_STREQ(x->GetClassName(), "vtkXOpenGLRenderWindow");
+  x->SetOffScreenRendering(1);
+  x->SetMultiSamples(0);
+  auto osmesa = NewOSMesa();
+  auto egl = NewEGL();
+  AddScene(x);
+  AddScene(osmesa);
+  AddScene(egl);
+  MessageCatcher messages;
+  for (int round = 0; round < 2; ++round)
+  {
+    for (vtkRenderWindow* window : { static_cast<vtkRenderWindow*>(x), osmesa.Get(), egl.Get() })
+    {
+      window->Render();
+      SCOPED_TRACE(std::string(window->GetClassName()) + " round " + std::to_string(round));
+      ExpectLambertSphere(Capture(window));
+    }
+  }
+  EXPECT_TRUE(messages.Errors().empty()) << messages.Errors()[0];
+}
 
 //------------------------------------------------------------------------------
 // The fallback when OSMesa cannot be used. OSMesa is looked up once per process, so each case
