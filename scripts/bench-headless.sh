@@ -20,17 +20,20 @@ cleanup() {
 trap cleanup EXIT
 unset DISPLAY
 if command -v Xvfb >/dev/null; then
-  for n in $(seq 90 99); do
-    if [ ! -e "/tmp/.X$n-lock" ]; then
-      Xvfb ":$n" -screen 0 1280x1280x24 -nolisten tcp -noreset >/dev/null 2>&1 &
-      xvfb_pid=$!
-      export DISPLAY=":$n"
-      for _ in $(seq 50); do
-        [ -e "/tmp/.X11-unix/X$n" ] && break
-        sleep 0.1
-      done
+  # The server picks a free display and writes its number once it accepts connections.
+  number_file=$(mktemp)
+  Xvfb -displayfd 3 -screen 0 1280x1280x24 -nolisten tcp -noreset 3>"$number_file" >/dev/null 2>&1 &
+  xvfb_pid=$!
+  for _ in $(seq 100); do
+    if [ -n "$(tr -d '\n' <"$number_file")" ] || ! kill -0 "$xvfb_pid" 2>/dev/null; then
       break
     fi
+    sleep 0.1
   done
+  number=$(tr -d '\n' <"$number_file")
+  rm -f "$number_file"
+  if [ -n "$number" ]; then
+    export DISPLAY=":$number"
+  fi
 fi
 "$bench" "$@"

@@ -23,6 +23,7 @@
 #include <functional>
 #include <thread>
 
+#include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -556,32 +557,36 @@ public:
     {
       return;
     }
-    for (int n = 70; n < 90; ++n)
+    // The server picks a free display itself and writes its number to the pipe once it accepts
+    // connections (-displayfd): tests running in parallel never race for the same display.
+    int ready[2];
+    if (pipe(ready) != 0)
     {
-      const std::string lock = "/tmp/.X" + std::to_string(n) + "-lock";
-      const std::string socket = "/tmp/.X11-unix/X" + std::to_string(n);
-      if (access(lock.c_str(), F_OK) == 0 || access(socket.c_str(), F_OK) == 0)
-      {
-        continue;
-      }
-      const std::string display = ":" + std::to_string(n);
-      this->Pid = fork();
-      if (this->Pid == 0)
-      {
-        // -noreset: a server resets when its last client leaves and refuses connections meanwhile
-        execl("/usr/bin/Xvfb", "Xvfb", display.c_str(), "-noreset", "-nolisten", "tcp", "-screen",
-          "0", "640x480x24", static_cast<char*>(nullptr));
-        _exit(127);
-      }
-      for (int wait = 0; wait < 100 && access(socket.c_str(), F_OK) != 0; ++wait)
-      {
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-      }
-      if (access(socket.c_str(), F_OK) == 0)
-      {
-        this->Display = display;
-      }
       return;
+    }
+    this->Pid = fork();
+    if (this->Pid == 0)
+    {
+      close(ready[0]);
+      const std::string fd = std::to_string(ready[1]);
+      // -noreset: a server resets when its last client leaves and refuses connections meanwhile
+      execl("/usr/bin/Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-noreset", "-nolisten", "tcp",
+        "-screen", "0", "640x480x24", static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    close(ready[1]);
+    std::string number;
+    pollfd wait = { ready[0], POLLIN, 0 };
+    char c = 0;
+    // Until the newline, EOF (the server exited) or 10 s without a word.
+    while (this->Pid > 0 && poll(&wait, 1, 10000) == 1 && read(ready[0], &c, 1) == 1 && c != '\n')
+    {
+      number += c;
+    }
+    close(ready[0]);
+    if (c == '\n' && !number.empty())
+    {
+      this->Display = ":" + number;
     }
   }
   ~Xvfb()
