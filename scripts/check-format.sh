@@ -3,7 +3,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
-mapfile -t files < <(find Filters Testing -name '*.h' -o -name '*.cxx' | sort)
+mapfile -t files < <(git ls-files '*.h' '*.cxx' | sort)
 if ! clang-format --dry-run -Werror "${files[@]}"; then
   echo "phongvtk: the files above are not clang-format clean; run: clang-format -i <file>" >&2
   exit 1
