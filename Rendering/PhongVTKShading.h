@@ -112,6 +112,13 @@ struct Configuration
   {
     return this->AnyPositional() || (this->AnySpecular() && !this->Parallel);
   }
+  /// Whether the fragment shader reads ks and alpha (Gouraud with the whole colour per vertex
+  /// does not).
+  bool FragmentUsesSpecular() const
+  {
+    return this->AnySpecular() &&
+      !(this->Shading == Mode::Gouraud && this->Colours != Material::FragmentOnly);
+  }
   /// Whether the fragment shader needs the interpolated position.
   bool FragmentNeedsPosition() const
   {

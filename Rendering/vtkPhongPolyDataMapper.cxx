@@ -200,6 +200,25 @@ void vtkPhongPolyDataMapper::BuildShaders(
 }
 
 //------------------------------------------------------------------------------
+void vtkPhongPolyDataMapper::ReplaceShaderColor(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  const vtkInternals::Primitive& primitive = this->Internals->Primitives[this->LastBoundBO];
+  if (!primitive.Active || primitive.Configuration.FragmentUsesSpecular())
+  {
+    this->Superclass::ReplaceShaderColor(shaders, ren, act);
+    return;
+  }
+  // VTK's colour code declares the specular material whenever the primitive is lit; it does so
+  // only when the light complexity is non-zero, so hide it for that call.
+  int& complexity = this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity;
+  const int lit = complexity;
+  complexity = 0;
+  this->Superclass::ReplaceShaderColor(shaders, ren, act);
+  complexity = lit;
+}
+
+//------------------------------------------------------------------------------
 void vtkPhongPolyDataMapper::ReplaceShaderNormal(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {

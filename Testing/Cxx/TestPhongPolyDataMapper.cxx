@@ -1,0 +1,566 @@
+// vtkPhongPolyDataMapper against an independent CPU evaluation of the Phong model (world
+// coordinates, double precision, PhongVTKPhongReference.h): Phong shading of a finely
+// tessellated sphere against the exact sphere, Gouraud and flat against their own per-vertex and
+// per-face references; the model's seed facts; the shaders holding only what the scene uses.
+#include "PhongVTKImageRegression.h"
+#include "PhongVTKPhongReference.h"
+#include "PhongVTKRenderingTestSupport.h"
+#include "vtkPhongPolyDataMapper.h"
+#include "vtkPolygonNormals.h"
+
+#include "vtkActor.h"
+#include "vtkCellData.h"
+#include "vtkLightCollection.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+using namespace phongvtk::testing;
+
+namespace
+{
+
+constexpr int Size = 200;
+
+vtkSmartPointer<vtkPolyData> Sphere(int theta, int phi, double radius = 0.5)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetRadius(radius);
+  source->SetThetaResolution(theta);
+  source->SetPhiResolution(phi);
+  source->Update();
+  return source->GetOutput();
+}
+
+// One actor drawn by vtkPhongPolyDataMapper in a headless window.
+class PhongScene
+{
+public:
+  PhongScene(vtkPolyData* mesh, const SceneSpec& scene, const MaterialSpec& material,
+    const CameraSpec& camera, int interpolation)
+  {
+    this->Mapper->SetInputData(mesh);
+    this->Actor->SetMapper(this->Mapper);
+    Apply(material, this->Actor->GetProperty());
+    this->Actor->GetProperty()->SetInterpolation(interpolation);
+    this->Renderer->AddActor(this->Actor);
+    this->Renderer->SetBackground(0.2, 0.2, 0.2);
+    Apply(scene, camera, this->Renderer);
+    this->Window->AddRenderer(this->Renderer);
+    this->Window->SetSize(Size, Size);
+  }
+  Image Render()
+  {
+    this->Window->Render();
+    return Capture(this->Window);
+  }
+  vtkNew<vtkPhongPolyDataMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkRenderWindow> Window = vtkSmartPointer<vtkRenderWindow>::New();
+};
+
+class PhongMapper : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    unsetenv("DISPLAY");
+    unsetenv("PHONGVTK_HEADLESS");
+  }
+};
+
+// A warm material: ka = 0.15*C, kd = 0.7*C, a white highlight.
+MaterialSpec Warm()
+{
+  MaterialSpec m;
+  m.Ambient = 0.15;
+  m.Diffuse = 0.7;
+  m.Specular = 0.5;
+  m.SpecularPower = 40;
+  m.AmbientColor = m.DiffuseColor = { 0.9, 0.6, 0.3 };
+  m.SpecularColor = { 1, 1, 1 };
+  return m;
+}
+
+SceneSpec OneWhiteLight()
+{
+  SceneSpec s;
+  LightSpec light;
+  light.Position = { 1, 1, 2 };
+  s.Lights.push_back(light);
+  s.RendererAmbient = { 0.2, 0.2, 0.2 };
+  return s;
+}
+
+// Three coloured lights with their own ambient and specular colours: directional, positional
+// with attenuation (no cone), and a spot (cone and exponent) covering the sphere.
+SceneSpec ThreeColouredLights()
+{
+  SceneSpec s;
+  LightSpec key;
+  key.Position = { -1, 1, 2 };
+  key.Diffuse = { 1, 0.9, 0.8 };
+  key.Specular = { 0.9, 0.9, 1 };
+  key.Ambient = { 0.1, 0.05, 0 };
+  key.Intensity = 0.8;
+  LightSpec fill;
+  fill.Positional = true;
+  fill.Position = { 1.5, 0.5, 2 };
+  fill.Diffuse = { 0.3, 0.5, 1 };
+  fill.Specular = { 0.5, 0.7, 1 };
+  fill.Intensity = 1.2;
+  fill.Attenuation = { 1, 0.2, 0.05 };
+  fill.ConeAngle = 180;
+  LightSpec spot;
+  spot.Positional = true;
+  spot.Position = { 0, 2.5, 2.5 };
+  spot.Diffuse = { 0.4, 1, 0.4 };
+  spot.Specular = { 0.2, 1, 0.2 };
+  spot.Intensity = 0.9;
+  spot.ConeAngle = 40;
+  spot.Exponent = 4;
+  s.Lights = { key, fill, spot };
+  s.RendererAmbient = { 0.1, 0.1, 0.15 };
+  return s;
+}
+
+CameraSpec Perspective()
+{
+  return CameraSpec();
+}
+
+CameraSpec Parallel()
+{
+  CameraSpec c;
+  c.Parallel = true;
+  c.ParallelScale = 0.6;
+  return c;
+}
+
+void ExpectAgreement(
+  const Image& image, const Reference& reference, double rms, double max, const std::string& what)
+{
+  const Agreement agreement = Compare(image, reference);
+  std::cout << "  " << what << ": " << agreement.Describe() << "\n";
+  EXPECT_GT(agreement.Pixels, 3000) << what;
+  EXPECT_LE(agreement.RMS, rms) << what << ": " << agreement.Describe();
+  EXPECT_LE(agreement.Max, max) << what << ": " << agreement.Describe();
+}
+
+//------------------------------------------------------------------------------
+// Phong shading of a finely tessellated sphere is the exact sphere's model within RMS 1 LSB
+// and max 3 LSB away from the silhouette.
+struct AnalyticCase
+{
+  const char* Name;
+  SceneSpec (*Scene)();
+  CameraSpec (*Camera)();
+};
+
+class PhongShadingMatchesTheExactSphere
+  : public PhongMapper
+  , public ::testing::WithParamInterface<AnalyticCase>
+{
+};
+
+TEST_P(PhongShadingMatchesTheExactSphere, WithinOneLSBRMSAndThreeMax)
+{
+  const AnalyticCase& c = GetParam();
+  const SceneSpec scene = c.Scene();
+  const CameraSpec camera = c.Camera();
+  PhongScene phong(Sphere(256, 128), scene, Warm(), camera, VTK_PHONG);
+  const Image image = phong.Render();
+  ExpectAgreement(
+    image, AnalyticSphere(scene, Warm(), camera, { 0, 0, 0 }, 0.5, Size, Size), 1.0, 3.0, c.Name);
+  EXPECT_NE(phong.Mapper->GetShaderConfiguration().find("phong"), std::string::npos);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, PhongShadingMatchesTheExactSphere,
+  ::testing::Values(AnalyticCase{ "OneLightPerspective", OneWhiteLight, Perspective },
+    AnalyticCase{ "OneLightParallel", OneWhiteLight, Parallel },
+    AnalyticCase{ "ThreeColouredLightsPerspective", ThreeColouredLights, Perspective },
+    AnalyticCase{ "ThreeColouredLightsParallel", ThreeColouredLights, Parallel }),
+  [](const ::testing::TestParamInfo<AnalyticCase>& info) { return std::string(info.param.Name); });
+
+// VTK's headlight (created by the renderer when it has no light) follows the same formula: a
+// white directional light from the camera.
+TEST_F(PhongMapper, HeadlightFollowsTheSameFormula)
+{
+  SceneSpec none;
+  none.RendererAmbient = { 0.2, 0.2, 0.2 };
+  PhongScene phong(Sphere(256, 128), none, Warm(), Perspective(), VTK_PHONG);
+  phong.Renderer->RemoveAllLights();
+  const Image image = phong.Render();
+  SceneSpec headlight = none;
+  LightSpec light;
+  light.Position = Perspective().Position;
+  headlight.Lights.push_back(light);
+  ExpectAgreement(image,
+    AnalyticSphere(headlight, Warm(), Perspective(), { 0, 0, 0 }, 0.5, Size, Size), 1.0, 3.0,
+    "headlight");
+}
+
+//------------------------------------------------------------------------------
+// Gouraud: the model evaluated at the vertices of a coarse sphere and the colours interpolated,
+// against the same on the CPU; and visibly not Phong shading (unlike VTK's OpenGL2 mapper, whose
+// Gouraud equals Phong).
+TEST_F(PhongMapper, GouraudMatchesPerVertexEvaluationWithInterpolatedColours)
+{
+  auto coarse = Sphere(24, 16);
+  for (const CameraSpec& camera : { Perspective(), Parallel() })
+  {
+    const SceneSpec scene = ThreeColouredLights();
+    PhongScene gouraud(coarse, scene, Warm(), camera, VTK_GOURAUD);
+    const Image image = gouraud.Render();
+    EXPECT_NE(gouraud.Mapper->GetShaderConfiguration().find("gouraud"), std::string::npos);
+    ExpectAgreement(image, RayCastMesh(scene, Warm(), camera, coarse, true, Size, Size), 1.0, 3.0,
+      camera.Parallel ? "gouraud, parallel" : "gouraud, perspective");
+    const Agreement phong =
+      Compare(image, AnalyticSphere(scene, Warm(), camera, { 0, 0, 0 }, 0.5, Size, Size));
+    EXPECT_GT(phong.Max, 20) << "Gouraud on 24 x 16 facets should differ from the smooth sphere: "
+                             << phong.Describe();
+  }
+}
+
+// Flat: one normal per face (the derivatives of the position, or the cell normals of
+// vtkPolygonNormals), the model evaluated per fragment.
+TEST_F(PhongMapper, FlatMatchesPerFaceEvaluation)
+{
+  auto coarse = Sphere(24, 16);
+  vtkNew<vtkPolygonNormals> normals;
+  normals->SetInputData(coarse);
+  normals->ComputeCellNormalsOn();
+  normals->ComputePointNormalsOff();
+  normals->Update();
+  vtkNew<vtkPolyData> withCellNormals;
+  withCellNormals->ShallowCopy(normals->GetOutput());
+  withCellNormals->GetPointData()->SetNormals(nullptr);
+  ASSERT_NE(withCellNormals->GetCellData()->GetNormals(), nullptr);
+
+  const SceneSpec scene = ThreeColouredLights();
+  for (vtkPolyData* mesh : { coarse.Get(), withCellNormals.Get() })
+  {
+    const bool cellNormals = mesh == withCellNormals.Get();
+    PhongScene flat(mesh, scene, Warm(), Perspective(), VTK_FLAT);
+    const Image image = flat.Render();
+    const std::string configuration = flat.Mapper->GetShaderConfiguration();
+    EXPECT_EQ(configuration.find("derivative-normals") != std::string::npos, !cellNormals)
+      << configuration;
+    ExpectAgreement(image, RayCastMesh(scene, Warm(), Perspective(), coarse, false, Size, Size),
+      1.0, 3.0, cellNormals ? "flat, cell normals" : "flat, derivatives");
+  }
+}
+
+//------------------------------------------------------------------------------
+// Seed facts of the model.
+
+// The colour products are component-wise: a red surface under a blue light is black.
+TEST_F(PhongMapper, RedSurfaceUnderBlueLightIsBlack)
+{
+  SceneSpec scene;
+  LightSpec blue;
+  blue.Position = { 0, 0, 1 };
+  blue.Diffuse = blue.Specular = blue.Ambient = { 0, 0, 1 };
+  scene.Lights.push_back(blue);
+  scene.RendererAmbient = { 0, 0, 0.5 };
+  MaterialSpec red;
+  red.Ambient = 0.3;
+  red.Diffuse = 1;
+  red.Specular = 1;
+  red.SpecularPower = 10;
+  red.AmbientColor = red.DiffuseColor = red.SpecularColor = { 1, 0, 0 };
+  PhongScene phong(Sphere(64, 32), scene, red, Perspective(), VTK_PHONG);
+  const Image image = phong.Render();
+  const Reference sphere = AnalyticSphere(scene, red, Perspective(), { 0, 0, 0 }, 0.5, Size, Size);
+  int pixels = 0;
+  for (int y = 0; y < Size; ++y)
+  {
+    for (int x = 0; x < Size; ++x)
+    {
+      Vec expected;
+      if (sphere(x, y, expected))
+      {
+        ++pixels;
+        ASSERT_EQ(image.At(x, y, 0) + image.At(x, y, 1) + image.At(x, y, 2), 0)
+          << "pixel " << x << ", " << y;
+      }
+    }
+  }
+  EXPECT_GT(pixels, 3000);
+  EXPECT_EQ(image.At(0, 0, 0), 51) << "the background is drawn around the black sphere";
+}
+
+// The same product with non-trivial components: kd = (0.8, 0.4, 0.2), Id = (0.5, 1, 0.25)
+// give (0.4, 0.4, 0.05) where n.l = 1 (the light behind the camera, parallel projection).
+TEST_F(PhongMapper, ColourProductsAreComponentWise)
+{
+  SceneSpec scene;
+  LightSpec light;
+  light.Position = { 0, 0, 1 };
+  light.Diffuse = { 0.5, 1, 0.25 };
+  scene.Lights.push_back(light);
+  MaterialSpec m;
+  m.DiffuseColor = { 0.8, 0.4, 0.2 };
+  PhongScene phong(Sphere(64, 32), scene, m, Parallel(), VTK_PHONG);
+  const Image image = phong.Render();
+  const double expected[3] = { 0.4, 0.4, 0.05 };
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(image.At(Size / 2, Size / 2, c), 255 * expected[c], 1.0) << "channel " << c;
+  }
+}
+
+// A light behind the surface gives no diffuse and no specular: only ka*Ia remains, on every
+// visible point (parallel projection: the visible half is exactly the half facing away).
+TEST_F(PhongMapper, LightBehindTheSurfaceLeavesOnlyTheAmbientTerm)
+{
+  SceneSpec scene;
+  LightSpec behind;
+  behind.Position = { 0, 0, -1 };
+  behind.Ambient = { 0.1, 0.2, 0.3 };
+  scene.Lights.push_back(behind);
+  scene.RendererAmbient = { 0.3, 0.2, 0.1 };
+  MaterialSpec m = Warm();
+  m.Ambient = 0.5;
+  PhongScene phong(Sphere(64, 32), scene, m, Parallel(), VTK_PHONG);
+  const Image image = phong.Render();
+  // ka*Ia = 0.5*(0.9, 0.6, 0.3)*(0.4, 0.4, 0.4)
+  const double ambient[3] = { 0.18, 0.12, 0.06 };
+  const Reference sphere = AnalyticSphere(scene, m, Parallel(), { 0, 0, 0 }, 0.5, Size, Size, 0.1);
+  int pixels = 0;
+  for (int y = 0; y < Size; ++y)
+  {
+    for (int x = 0; x < Size; ++x)
+    {
+      Vec colour;
+      if (!sphere(x, y, colour))
+      {
+        continue;
+      }
+      ++pixels;
+      for (int c = 0; c < 3; ++c)
+      {
+        ASSERT_NEAR(image.At(x, y, c), 255 * ambient[c], 0.51)
+          << x << ", " << y << " channel " << c;
+      }
+    }
+  }
+  EXPECT_GT(pixels, 5000);
+}
+
+// The highlight sits where v.r is largest: under parallel projection with a directional light,
+// where the normal is the half vector h = (l + v)/|l + v|.
+TEST_F(PhongMapper, HighlightSitsWhereVDotRIsLargest)
+{
+  SceneSpec scene;
+  LightSpec light;
+  light.Position = { 1, 0.5, 1 };
+  scene.Lights.push_back(light);
+  MaterialSpec shiny;
+  shiny.Diffuse = 0;
+  shiny.Specular = 1;
+  shiny.SpecularPower = 200;
+  PhongScene phong(Sphere(256, 128), scene, shiny, Parallel(), VTK_PHONG);
+  const Image image = phong.Render();
+  int bx = -1, by = -1, best = -1;
+  for (int y = 0; y < Size; ++y)
+  {
+    for (int x = 0; x < Size; ++x)
+    {
+      if (image.At(x, y, 0) > best)
+      {
+        best = image.At(x, y, 0);
+        bx = x;
+        by = y;
+      }
+    }
+  }
+  const Vec h = Unit(Unit(light.Position) + Vec{ 0, 0, 1 });
+  // The sphere point 0.5*h seen through the parallel camera (scale 0.6: 200 px = 1.2 units).
+  const double px = (0.5 * h[0] / 0.6 + 1) * Size / 2 - 0.5;
+  const double py = (0.5 * h[1] / 0.6 + 1) * Size / 2 - 0.5;
+  EXPECT_GE(best, 250) << "ks*Is*(v.r)^alpha = 1 at the half vector";
+  EXPECT_LE(std::hypot(bx - px, by - py), 1.5)
+    << "brightest pixel " << bx << ", " << by << "; half vector at " << px << ", " << py;
+}
+
+// Two-sided lighting follows the renderer: a back face is lit with its normal reversed, or gets
+// only the ambient term.
+TEST_F(PhongMapper, BackFacesFollowTheRenderersTwoSidedLighting)
+{
+  vtkNew<vtkPlaneSource> plane; // normal +z, seen from -z below
+  plane->SetResolution(4, 4);
+  plane->Update();
+  CameraSpec below;
+  below.Position = { 0, 0, -4 };
+  SceneSpec scene;
+  LightSpec light;
+  light.Position = { 0, 0, -1 };
+  scene.Lights.push_back(light);
+  scene.RendererAmbient = { 1, 1, 1 };
+  MaterialSpec m;
+  m.Ambient = 0.2;
+  m.Diffuse = 0.5;
+  m.AmbientColor = m.DiffuseColor = { 1, 1, 1 };
+  for (bool twoSided : { true, false })
+  {
+    scene.TwoSided = twoSided;
+    PhongScene phong(plane->GetOutput(), scene, m, below, VTK_PHONG);
+    const Image image = phong.Render();
+    const double expected = twoSided ? 0.7 : 0.2; // 0.2 ambient + 0.5 diffuse when lit
+    EXPECT_NEAR(image.At(Size / 2, Size / 2, 1), 255 * expected, 1.0)
+      << (twoSided ? "two-sided" : "one-sided");
+  }
+}
+
+//------------------------------------------------------------------------------
+// The shaders hold only what the scene uses.
+TEST_F(PhongMapper, DiffuseOnlySceneHasNoSpecularCode)
+{
+  MaterialSpec matte = Warm();
+  matte.Specular = 0;
+  PhongScene phong(Sphere(32, 16), OneWhiteLight(), matte, Perspective(), VTK_PHONG);
+  phong.Render();
+  const std::string fs = phong.Mapper->GetFragmentShaderSource();
+  ASSERT_FALSE(fs.empty());
+  EXPECT_EQ(fs.find("pecular"), std::string::npos) << fs; // no specular term, uniform or function
+  EXPECT_NE(fs.find("phongDiffuse("), std::string::npos);
+  // Directional light, no eye vector needed, point normals: no interpolated position.
+  EXPECT_EQ(fs.find("vertexVC"), std::string::npos) << fs;
+  EXPECT_EQ(phong.Mapper->GetVertexShaderSource().find("vertexVCVSOutput"), std::string::npos);
+}
+
+TEST_F(PhongMapper, ShadersHoldExactlyTheScenesLightsAndKinds)
+{
+  PhongScene phong(Sphere(32, 16), ThreeColouredLights(), Warm(), Perspective(), VTK_PHONG);
+  phong.Render();
+  const std::string fs = phong.Mapper->GetFragmentShaderSource();
+  EXPECT_NE(fs.find("// light 0: directional"), std::string::npos) << fs;
+  EXPECT_NE(fs.find("// light 1: positional, attenuated"), std::string::npos) << fs;
+  EXPECT_NE(fs.find("// light 2: spot"), std::string::npos) << fs;
+  EXPECT_EQ(fs.find("light 3"), std::string::npos);
+  EXPECT_EQ(fs.find("for ("), std::string::npos) << "no loop over lights";
+  EXPECT_EQ(fs.find("lightColor"), std::string::npos) << "none of VTK's own light code";
+
+  // One directional light: no attenuation or cone code at all.
+  PhongScene one(Sphere(32, 16), OneWhiteLight(), Warm(), Perspective(), VTK_PHONG);
+  one.Render();
+  const std::string single = one.Mapper->GetFragmentShaderSource();
+  EXPECT_EQ(single.find("phongAttenuation"), std::string::npos);
+  EXPECT_EQ(single.find("phongSpotlight"), std::string::npos);
+  EXPECT_EQ(single.find("light 1"), std::string::npos);
+  // The specular eye vector varies under perspective: the position is interpolated.
+  EXPECT_NE(single.find("vertexVC"), std::string::npos);
+}
+
+TEST_F(PhongMapper, GouraudEvaluatesInTheVertexShaderOnly)
+{
+  PhongScene gouraud(Sphere(32, 16), OneWhiteLight(), Warm(), Perspective(), VTK_GOURAUD);
+  gouraud.Render();
+  const std::string vs = gouraud.Mapper->GetVertexShaderSource();
+  const std::string fs = gouraud.Mapper->GetFragmentShaderSource();
+  EXPECT_NE(vs.find("phongDiffuse("), std::string::npos) << vs;
+  EXPECT_NE(vs.find("phongSpecular("), std::string::npos) << vs;
+  EXPECT_EQ(fs.find("phongDiffuse("), std::string::npos) << fs;
+  EXPECT_EQ(fs.find("normalVCVSOutput"), std::string::npos) << fs;
+  EXPECT_EQ(fs.find("vertexVC"), std::string::npos) << fs;
+}
+
+TEST_F(PhongMapper, ShadersAreRebuiltOnlyWhenTheConfigurationChanges)
+{
+  PhongScene phong(Sphere(32, 16), OneWhiteLight(), Warm(), Perspective(), VTK_PHONG);
+  phong.Render();
+  const int first = phong.Mapper->GetShaderRebuilds();
+  EXPECT_GE(first, 1);
+  phong.Render();
+  EXPECT_EQ(phong.Mapper->GetShaderRebuilds(), first) << "redrawing an unchanged scene";
+  phong.Actor->GetProperty()->SetSpecular(0.6);
+  phong.Actor->GetProperty()->SetSpecularPower(10);
+  phong.Render();
+  EXPECT_EQ(phong.Mapper->GetShaderRebuilds(), first) << "a coefficient, every term still present";
+  phong.Actor->GetProperty()->SetSpecular(0);
+  phong.Render();
+  EXPECT_EQ(phong.Mapper->GetShaderRebuilds(), first + 1) << "the specular term dropped";
+  EXPECT_EQ(phong.Mapper->GetFragmentShaderSource().find("pecular"), std::string::npos);
+  vtkLight* light = vtkLight::SafeDownCast(phong.Renderer->GetLights()->GetItemAsObject(0));
+  light->SetPositional(true);
+  light->SetConeAngle(90);
+  phong.Render();
+  EXPECT_EQ(phong.Mapper->GetShaderRebuilds(), first + 2) << "a light changed kind";
+  EXPECT_NE(phong.Mapper->GetFragmentShaderSource().find("light 0: positional"), std::string::npos);
+}
+
+// Smooth shading without point normals falls back to flat with one warning.
+TEST_F(PhongMapper, SmoothShadingWithoutPointNormalsFallsBackToFlatWithOneWarning)
+{
+  vtkNew<vtkPolyData> bare;
+  bare->ShallowCopy(Sphere(24, 16));
+  bare->GetPointData()->SetNormals(nullptr);
+  MessageCatcher messages;
+  PhongScene phong(bare, ThreeColouredLights(), Warm(), Perspective(), VTK_PHONG);
+  const Image image = phong.Render();
+  phong.Render();
+  ASSERT_EQ(messages.Warnings().size(), 1u);
+  EXPECT_NE(messages.Warnings()[0].find("point normals"), std::string::npos);
+  EXPECT_NE(phong.Mapper->GetShaderConfiguration().find("flat"), std::string::npos);
+  ExpectAgreement(image,
+    RayCastMesh(ThreeColouredLights(), Warm(), Perspective(), bare, false, Size, Size), 1.0, 3.0,
+    "fallback to flat");
+}
+
+// Presets set the material as documented, keeping the diffuse colour.
+TEST_F(PhongMapper, PresetsSetTheMaterial)
+{
+  vtkNew<vtkProperty> p;
+  p->SetDiffuseColor(0.8, 0.2, 0.1);
+  p->SetDiffuse(0.9);
+  ASSERT_TRUE(vtkPhongPolyDataMapper::ApplyPreset(p, "plastic"));
+  EXPECT_EQ(p->GetAmbient(), p->GetDiffuse());
+  EXPECT_EQ(p->GetAmbientColor()[0], 0.8);
+  EXPECT_EQ(p->GetSpecularColor()[1], 1.0);
+  EXPECT_GT(p->GetSpecular(), 0);
+  ASSERT_TRUE(vtkPhongPolyDataMapper::ApplyPreset(p, "metal"));
+  EXPECT_EQ(p->GetSpecularColor()[1], 0.2) << "highlight tinted by the surface";
+  EXPECT_GE(p->GetSpecularPower(), 80);
+  ASSERT_TRUE(vtkPhongPolyDataMapper::ApplyPreset(p, "matte"));
+  EXPECT_EQ(p->GetSpecular(), 0);
+  EXPECT_EQ(p->GetDiffuseColor()[0], 0.8);
+  EXPECT_FALSE(vtkPhongPolyDataMapper::ApplyPreset(p, "velvet"));
+}
+
+// Scene ambient: Ia = (sum of Id) * mean kd of the visible actors.
+TEST_F(PhongMapper, SceneAmbientIsTheLightTimesTheMeanDiffuseReflectance)
+{
+  SceneSpec scene;
+  LightSpec light;
+  light.Position = { 0, 0, -1 }; // behind: only the ambient term shows
+  light.Diffuse = { 1, 0.5, 0.5 };
+  scene.Lights.push_back(light);
+  scene.RendererAmbient = { 1, 1, 1 }; // replaced by the scene-derived ambient
+  MaterialSpec m;
+  m.Ambient = 1;
+  m.AmbientColor = { 1, 1, 1 };
+  m.Diffuse = 0.5;
+  m.DiffuseColor = { 0.2, 0.4, 0.8 };
+  PhongScene phong(Sphere(64, 32), scene, m, Parallel(), VTK_PHONG);
+  phong.Mapper->SceneAmbientOn();
+  const Image image = phong.Render();
+  // Ia = (1, 0.5, 0.5) * 0.5 * (0.2, 0.4, 0.8) = (0.1, 0.1, 0.2); ka = 1.
+  EXPECT_NEAR(image.At(Size / 2, Size / 2, 0), 25.5, 1.0);
+  EXPECT_NEAR(image.At(Size / 2, Size / 2, 1), 25.5, 1.0);
+  EXPECT_NEAR(image.At(Size / 2, Size / 2, 2), 51.0, 1.0);
+}
+
+}
