@@ -58,12 +58,20 @@ void AppendLight(std::ostringstream& glsl, const Configuration::LightTerms& ligh
   {
     return;
   }
-  const char* kind = !light.Positional ? "directional" : (light.Spot ? "spot" : "positional");
+  const char* kind = light.Headlight ? "headlight"
+    : !light.Positional              ? "directional"
+                                     : (light.Spot ? "spot" : "positional");
   glsl << "  {\n    // light " << j << ": " << kind << (light.Attenuated ? ", attenuated" : "")
        << "\n";
   std::string l;
   std::string a;
-  if (!light.Positional)
+  if (light.Headlight)
+  {
+    // A headlight shines from the eye along the view direction: l is +z in view coordinates by
+    // definition, a constant the compiler folds (n.l is n.z).
+    l = "vec3(0.0, 0.0, 1.0)";
+  }
+  else if (!light.Positional)
   {
     l = Indexed("phongToLightVC", j);
   }
@@ -155,8 +163,11 @@ void AppendLightDeclarations(std::ostringstream& glsl, const Configuration& conf
     {
       continue;
     }
-    glsl << "uniform vec3 " << (light.Positional ? "phongLightPositionVC" : "phongToLightVC") << j
-         << ";\n";
+    if (!light.Headlight)
+    {
+      glsl << "uniform vec3 " << (light.Positional ? "phongLightPositionVC" : "phongToLightVC") << j
+           << ";\n";
+    }
     if (light.Attenuated)
     {
       glsl << "uniform vec3 phongLightAttenuation" << j << ";\n";
@@ -314,6 +325,7 @@ Scene GatherScene(vtkRenderer* renderer, bool sceneAmbient)
     view->TransformVector(axis, axisVC);
     vtkMath::Normalize(axisVC);
     light.Positional = vtklight->GetPositional() != 0;
+    light.Headlight = !light.Positional && vtklight->LightTypeIsHeadlight();
     if (!light.Positional)
     {
       const double toLight[3] = { -axisVC[0], -axisVC[1], -axisVC[2] };
@@ -434,7 +446,7 @@ std::string Configuration::Describe() const
 
 //------------------------------------------------------------------------------
 Configuration Configure(const Scene& scene, vtkProperty* front, vtkProperty* back, Mode mode,
-  Material colours, bool derivativeNormals, bool keepPosition)
+  Material colours, bool derivativeNormals, bool keepPosition, bool specialize)
 {
   Configuration config;
   config.Shading = mode;
@@ -466,9 +478,20 @@ Configuration Configure(const Scene& scene, vtkProperty* front, vtkProperty* bac
     terms.Positional = light.Positional;
     terms.Attenuated = light.Attenuated;
     terms.Spot = light.Spot;
+    terms.Headlight = light.Headlight;
     terms.Diffuse = kd && NonZero(light.Diffuse);
     terms.Specular = ks && NonZero(light.Specular);
+    if (!specialize)
+    {
+      terms.Diffuse = terms.Specular = true;
+      terms.Attenuated = terms.Spot = terms.Positional;
+    }
     config.Lights.push_back(terms);
+  }
+  if (!specialize)
+  {
+    config.Ambient = true;
+    config.KeepPosition = true;
   }
   return config;
 }

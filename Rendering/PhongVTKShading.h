@@ -52,8 +52,9 @@ enum class Material
 struct Light
 {
   bool Positional = false;
-  bool Attenuated = false;        ///< positional with attenuation other than (1, 0, 0)
-  bool Spot = false;              ///< positional with a cone angle below 90 degrees
+  bool Attenuated = false; ///< positional with attenuation other than (1, 0, 0)
+  bool Spot = false;       ///< positional with a cone angle below 90 degrees
+  bool Headlight = false;  ///< directional from the camera: l = +z in view coordinates, always
   float ToLight[3] = { 0, 0, 1 }; ///< directional: unit vector from the surface to the light
   float Position[3] = { 0, 0, 0 };
   float Axis[3] = { 0, 0, -1 }; ///< spot: unit direction the light shines in
@@ -85,12 +86,14 @@ struct Configuration
     bool Positional = false;
     bool Attenuated = false;
     bool Spot = false;
+    bool Headlight = false;
     bool Diffuse = false;
     bool Specular = false;
     bool operator==(const LightTerms& o) const
     {
       return this->Positional == o.Positional && this->Attenuated == o.Attenuated &&
-        this->Spot == o.Spot && this->Diffuse == o.Diffuse && this->Specular == o.Specular;
+        this->Spot == o.Spot && this->Headlight == o.Headlight && this->Diffuse == o.Diffuse &&
+        this->Specular == o.Specular;
     }
   };
   Mode Shading = Mode::Phong;
@@ -133,9 +136,11 @@ struct Configuration
 
 /// The configuration for a scene and a material (`back` is the actor's back-face property or
 /// null): a term is present only when its coefficient, its material colour (for a uniform
-/// material) and some light's colour are all non-zero.
+/// material) and some light's colour are all non-zero. Without `specialize` every term of every
+/// light is present and positional lights carry attenuation and cone code (a general shader,
+/// for measuring what specialisation saves).
 Configuration Configure(const Scene& scene, vtkProperty* front, vtkProperty* back, Mode mode,
-  Material colours, bool derivativeNormals, bool keepPosition);
+  Material colours, bool derivativeNormals, bool keepPosition, bool specialize = true);
 
 /// GLSL for the configuration. Declarations go to //VTK::Light::Dec of the stage that evaluates
 /// the model (and the varyings of the other stage); implementations replace //VTK::Light::Impl.

@@ -171,7 +171,8 @@ bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
       (keys && keys->Has(vtkOpenGLRenderPass::RenderPasses())) || this->DrawingEdges(ren, act);
 
     config = shading::Configure(this->Internals->Scene, property, act->GetBackfaceProperty(), mode,
-      colours, mode == shading::Mode::Flat && !this->HaveCellNormals, keepPosition);
+      colours, mode == shading::Mode::Flat && !this->HaveCellNormals, keepPosition,
+      this->SpecializeShaders);
   }
 
   if (active != primitive.Active || (active && config != primitive.Configuration))
@@ -314,6 +315,7 @@ void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SceneAmbient: " << (this->SceneAmbient ? "On" : "Off") << "\n";
+  os << indent << "SpecializeShaders: " << (this->SpecializeShaders ? "On" : "Off") << "\n";
   os << indent << "ShaderRebuilds: " << this->ShaderRebuilds << "\n";
   os << indent << "ShaderConfiguration: " << this->GetShaderConfiguration() << "\n";
 }

@@ -64,6 +64,17 @@ public:
   vtkBooleanMacro(SceneAmbient, bool);
   ///@}
 
+  ///@{
+  /**
+   * Generate shaders holding only the terms, lights and light kinds the scene uses. Off: every
+   * term of every light is evaluated and the position interpolated (a general shader, for
+   * measuring what specialisation saves; the image is the same). Default: on.
+   */
+  vtkSetMacro(SpecializeShaders, bool);
+  vtkGetMacro(SpecializeShaders, bool);
+  vtkBooleanMacro(SpecializeShaders, bool);
+  ///@}
+
   /**
    * Material presets of the model, applied to a property keeping its diffuse colour C:
    * - PLASTIC: ka = kd (AmbientColor = DiffuseColor = C, Ambient = Diffuse), white highlight
@@ -123,6 +134,7 @@ protected:
     vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
   bool SceneAmbient = false;
+  bool SpecializeShaders = true;
   int ShaderRebuilds = 0;
 
 private:

@@ -564,3 +564,27 @@ TEST_F(PhongMapper, SceneAmbientIsTheLightTimesTheMeanDiffuseReflectance)
 }
 
 }
+
+namespace
+{
+// The general shader (every term of every light) draws the same image as the specialised one.
+TEST_F(PhongMapper, GeneralShaderDrawsTheSameImage)
+{
+  MaterialSpec matte = Warm();
+  matte.Specular = 0;
+  for (int interpolation : { VTK_FLAT, VTK_GOURAUD, VTK_PHONG })
+  {
+    PhongScene phong(Sphere(48, 24), ThreeColouredLights(), matte, Perspective(), interpolation);
+    const Image specialised = phong.Render();
+    const std::string lean =
+      phong.Mapper->GetFragmentShaderSource() + phong.Mapper->GetVertexShaderSource();
+    phong.Mapper->SpecializeShadersOff();
+    const Image general = phong.Render();
+    const std::string full =
+      phong.Mapper->GetFragmentShaderSource() + phong.Mapper->GetVertexShaderSource();
+    EXPECT_LE(MaxAbsDifference(specialised, general), 1) << "interpolation " << interpolation;
+    EXPECT_EQ(lean.find("phongSpecular("), std::string::npos);
+    EXPECT_NE(full.find("phongSpecular("), std::string::npos);
+  }
+}
+}
