@@ -23,7 +23,9 @@
 #include "vtkSphereSource.h"
 #include "vtkWindowToImageFilter.h"
 
+#include "PhongVTKMedianReporter.h"
 #include <X11/Xlib.h>
+
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -133,25 +135,6 @@ vtkSmartPointer<vtkRenderWindow> NewVTKWindow(bool sameWork)
   return window;
 }
 
-class MedianReporter : public benchmark::ConsoleReporter
-{
-public:
-  std::map<std::string, double> Seconds;
-  void ReportRuns(const std::vector<Run>& runs) override
-  {
-    benchmark::ConsoleReporter::ReportRuns(runs);
-    for (const Run& run : runs)
-    {
-      const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
-      const bool single = run.run_type == Run::RT_Iteration && run.repetitions <= 1;
-      if (median || single)
-      {
-        this->Seconds[run.run_name.function_name] =
-          run.real_accumulated_time / static_cast<double>(run.iterations);
-      }
-    }
-  }
-};
 }
 
 int main(int argc, char** argv)
@@ -203,7 +186,7 @@ int main(int argc, char** argv)
       ->UseManualTime()
       ->MinTime(2.0);
   }
-  MedianReporter reporter;
+  phongvtk::benchmarks::MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
 
   const char* threads = std::getenv("LP_NUM_THREADS");

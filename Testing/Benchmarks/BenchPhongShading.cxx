@@ -25,6 +25,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 
+#include "PhongVTKMedianReporter.h"
+
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -131,26 +133,6 @@ void Frame(benchmark::State& state, Mapper kind, bool large, bool allTerms)
   }
   state.counters["triangles"] = static_cast<double>(Mesh(large)->GetNumberOfCells());
 }
-
-class MedianReporter : public benchmark::ConsoleReporter
-{
-public:
-  std::map<std::string, double> Seconds;
-  void ReportRuns(const std::vector<Run>& runs) override
-  {
-    benchmark::ConsoleReporter::ReportRuns(runs);
-    for (const Run& run : runs)
-    {
-      const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
-      const bool single = run.run_type == Run::RT_Iteration && run.repetitions <= 1;
-      if (median || single)
-      {
-        this->Seconds[run.run_name.function_name] =
-          run.real_accumulated_time / static_cast<double>(run.iterations);
-      }
-    }
-  }
-};
 
 const char* MapperName(Mapper kind)
 {
@@ -309,7 +291,7 @@ int main(int argc, char** argv)
       }
     }
   }
-  MedianReporter reporter;
+  phongvtk::benchmarks::MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
 
   std::printf("\nFrame time at %d x %d (medians when repeated), ratio = time / stock time "
