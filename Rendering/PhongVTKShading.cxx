@@ -26,12 +26,8 @@ namespace shading
 namespace
 {
 
-bool NonZero(const double c[3])
-{
-  return c[0] != 0 || c[1] != 0 || c[2] != 0;
-}
-
-bool NonZero(const float c[3])
+template <typename T>
+bool NonZero(const T c[3])
 {
   return c[0] != 0 || c[1] != 0 || c[2] != 0;
 }
@@ -246,31 +242,33 @@ bool GouraudWholeColour(const Configuration& config)
   return config.Colours != Material::FragmentOnly;
 }
 
+// The light terms present ("Diffuse", "Specular"), as the names of the Gouraud varyings carry.
+std::vector<std::string> LightTermNames(const Configuration& config)
+{
+  std::vector<std::string> terms;
+  if (config.AnyDiffuse())
+  {
+    terms.emplace_back("Diffuse");
+  }
+  if (config.AnySpecular())
+  {
+    terms.emplace_back("Specular");
+  }
+  return terms;
+}
+
 std::vector<std::string> GouraudVaryings(const Configuration& config)
 {
+  // The whole colour per side, or the light terms per side.
+  const std::vector<std::string> quantities =
+    GouraudWholeColour(config) ? std::vector<std::string>{ "Colour" } : LightTermNames(config);
   std::vector<std::string> names;
-  if (GouraudWholeColour(config))
+  for (const std::string& quantity : quantities)
   {
-    names.emplace_back("phongFrontColour");
+    names.push_back("phongFront" + quantity);
     if (config.TwoSided)
     {
-      names.emplace_back("phongBackColour");
-    }
-    return names;
-  }
-  for (const char* side : { "Front", "Back" })
-  {
-    if (side[0] == 'B' && !config.TwoSided)
-    {
-      break;
-    }
-    if (config.AnyDiffuse())
-    {
-      names.push_back(std::string("phong") + side + "Diffuse");
-    }
-    if (config.AnySpecular())
-    {
-      names.push_back(std::string("phong") + side + "Specular");
+      names.push_back("phongBack" + quantity);
     }
   }
   return names;
@@ -562,17 +560,12 @@ std::string FragmentImplementation(const Configuration& config)
   }
   else
   {
-    for (const char* term : { "Diffuse", "Specular" })
+    for (const std::string& term : LightTermNames(config))
     {
-      if ((term[0] == 'D' && !config.AnyDiffuse()) || (term[0] == 'S' && !config.AnySpecular()))
-      {
-        continue;
-      }
-      std::string local = term[0] == 'D' ? "diffuse" : "specular";
+      const std::string local = term == "Diffuse" ? "diffuse" : "specular";
       glsl << "  vec3 " << local << " = phongFront" << term << "VSOutput;\n"
            << "  if (gl_FrontFacing == false) { " << local << " = "
-           << (config.TwoSided ? std::string("phongBack") + term + "VSOutput" : "vec3(0.0)")
-           << "; }\n";
+           << (config.TwoSided ? "phongBack" + term + "VSOutput" : "vec3(0.0)") << "; }\n";
     }
     glsl << "  gl_FragData[0] = vec4("
          << Sum(config, "ambientColor", "diffuseColor", "specularColor") << ", opacity);\n";
