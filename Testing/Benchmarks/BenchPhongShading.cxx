@@ -44,21 +44,10 @@ namespace
 {
 constexpr int Size = 1024;
 
-// vtkSphereSource makes 2 theta (phi - 2) triangles.
-vtkSmartPointer<vtkPolyData> Sphere(int theta, int phi)
-{
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(0.5);
-  sphere->SetThetaResolution(theta);
-  sphere->SetPhiResolution(phi);
-  sphere->Update();
-  return sphere->GetOutput();
-}
-
 vtkPolyData* Mesh(bool large)
 {
-  static vtkSmartPointer<vtkPolyData> big = Sphere(1000, 502);
-  static vtkSmartPointer<vtkPolyData> small = Sphere(64, 66);
+  static vtkSmartPointer<vtkPolyData> big = SphereMesh(1000, 502);
+  static vtkSmartPointer<vtkPolyData> small = SphereMesh(64, 66);
   return large ? big.Get() : small.Get();
 }
 
@@ -99,12 +88,7 @@ void Setup(Bench& bench, Mapper kind, vtkPolyData* mesh, bool allTerms, bool fil
                                            : VTK_PHONG);
   if (allTerms)
   {
-    p->SetColor(0.9, 0.6, 0.3);
-    p->SetAmbient(0.15);
-    p->SetDiffuse(0.7);
-    p->SetSpecular(0.5);
-    p->SetSpecularColor(1, 1, 1);
-    p->SetSpecularPower(40);
+    Apply(WarmMaterial(), p);
   }
   bench.Renderer->AddActor(bench.Actor);
   vtkCamera* camera = bench.Renderer->GetActiveCamera();
@@ -170,12 +154,7 @@ void TessellationTable()
   fill.Specular = { 0.3, 0.4, 0.8 };
   scene.Lights = { key, fill };
   scene.RendererAmbient = { 0.2, 0.2, 0.2 };
-  MaterialSpec material;
-  material.Ambient = 0.15;
-  material.Diffuse = 0.7;
-  material.Specular = 0.5;
-  material.SpecularPower = 40;
-  material.AmbientColor = material.DiffuseColor = { 0.9, 0.6, 0.3 };
+  const MaterialSpec material = WarmMaterial();
   CameraSpec camera;
   camera.Position = { 0, 0, 2.2 };
   const Reference truth = AnalyticSphere(scene, material, camera, { 0, 0, 0 }, 0.5, size, size);
@@ -190,7 +169,7 @@ void TessellationTable()
     { 256, 130 }, { 512, 258 }, { 1024, 514 } };
   for (const auto& res : resolutions)
   {
-    auto mesh = Sphere(res[0], res[1]);
+    auto mesh = SphereMesh(res[0], res[1]);
     Row row{ static_cast<int>(mesh->GetNumberOfCells()), {}, {}, {} };
     int column = 0;
     for (int interpolation : { VTK_FLAT, VTK_GOURAUD, VTK_PHONG })

@@ -10,10 +10,12 @@
 
 #include "vtkCamera.h"
 #include "vtkLight.h"
+#include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
 
 #include <algorithm>
 #include <array>
@@ -96,6 +98,31 @@ struct CameraSpec
   bool Parallel = false;
   double ParallelScale = 0.6;
 };
+
+/// A warm plastic: ka = 0.15 C, kd = 0.7 C with C = (0.9, 0.6, 0.3), a white highlight (0.5,
+/// exponent 40). The tests' and benchmarks' material with every term present.
+inline MaterialSpec WarmMaterial()
+{
+  MaterialSpec m;
+  m.Ambient = 0.15;
+  m.Diffuse = 0.7;
+  m.Specular = 0.5;
+  m.SpecularPower = 40;
+  m.AmbientColor = m.DiffuseColor = { 0.9, 0.6, 0.3 };
+  m.SpecularColor = { 1, 1, 1 };
+  return m;
+}
+
+/// vtkSphereSource's sphere at the origin (2 theta (phi - 2) triangles, point normals).
+inline vtkSmartPointer<vtkPolyData> SphereMesh(int theta, int phi, double radius = 0.5)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetRadius(radius);
+  source->SetThetaResolution(theta);
+  source->SetPhiResolution(phi);
+  source->Update();
+  return source->GetOutput();
+}
 
 /// The same scene for VTK.
 inline void Apply(const SceneSpec& scene, const CameraSpec& camera, vtkRenderer* renderer)

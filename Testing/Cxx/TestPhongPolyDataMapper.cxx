@@ -33,16 +33,6 @@ namespace
 
 constexpr int Size = 200;
 
-vtkSmartPointer<vtkPolyData> Sphere(int theta, int phi, double radius = 0.5)
-{
-  vtkNew<vtkSphereSource> source;
-  source->SetRadius(radius);
-  source->SetThetaResolution(theta);
-  source->SetPhiResolution(phi);
-  source->Update();
-  return source->GetOutput();
-}
-
 // One actor drawn by vtkPhongPolyDataMapper in a headless window.
 class PhongScene
 {
@@ -80,19 +70,6 @@ protected:
     unsetenv("PHONGVTK_HEADLESS");
   }
 };
-
-// A warm material: ka = 0.15*C, kd = 0.7*C, a white highlight.
-MaterialSpec Warm()
-{
-  MaterialSpec m;
-  m.Ambient = 0.15;
-  m.Diffuse = 0.7;
-  m.Specular = 0.5;
-  m.SpecularPower = 40;
-  m.AmbientColor = m.DiffuseColor = { 0.9, 0.6, 0.3 };
-  m.SpecularColor = { 1, 1, 1 };
-  return m;
-}
 
 SceneSpec OneWhiteLight()
 {
@@ -180,10 +157,10 @@ TEST_P(PhongShadingMatchesTheExactSphere, WithinOneLSBRMSAndThreeMax)
   const AnalyticCase& c = GetParam();
   const SceneSpec scene = c.Scene();
   const CameraSpec camera = c.Camera();
-  PhongScene phong(Sphere(256, 128), scene, Warm(), camera, VTK_PHONG);
+  PhongScene phong(SphereMesh(256, 128), scene, WarmMaterial(), camera, VTK_PHONG);
   const Image image = phong.Render();
-  ExpectAgreement(
-    image, AnalyticSphere(scene, Warm(), camera, { 0, 0, 0 }, 0.5, Size, Size), 1.0, 3.0, c.Name);
+  ExpectAgreement(image,
+    AnalyticSphere(scene, WarmMaterial(), camera, { 0, 0, 0 }, 0.5, Size, Size), 1.0, 3.0, c.Name);
   EXPECT_NE(phong.Mapper->GetShaderConfiguration().find("phong"), std::string::npos);
 }
 
@@ -200,7 +177,7 @@ TEST_F(PhongMapper, HeadlightFollowsTheSameFormula)
 {
   SceneSpec none;
   none.RendererAmbient = { 0.2, 0.2, 0.2 };
-  PhongScene phong(Sphere(256, 128), none, Warm(), Perspective(), VTK_PHONG);
+  PhongScene phong(SphereMesh(256, 128), none, WarmMaterial(), Perspective(), VTK_PHONG);
   phong.Renderer->RemoveAllLights();
   const Image image = phong.Render();
   SceneSpec headlight = none;
@@ -208,8 +185,8 @@ TEST_F(PhongMapper, HeadlightFollowsTheSameFormula)
   light.Position = Perspective().Position;
   headlight.Lights.push_back(light);
   ExpectAgreement(image,
-    AnalyticSphere(headlight, Warm(), Perspective(), { 0, 0, 0 }, 0.5, Size, Size), 1.0, 3.0,
-    "headlight");
+    AnalyticSphere(headlight, WarmMaterial(), Perspective(), { 0, 0, 0 }, 0.5, Size, Size), 1.0,
+    3.0, "headlight");
 }
 
 //------------------------------------------------------------------------------
@@ -218,17 +195,17 @@ TEST_F(PhongMapper, HeadlightFollowsTheSameFormula)
 // Gouraud equals Phong).
 TEST_F(PhongMapper, GouraudMatchesPerVertexEvaluationWithInterpolatedColours)
 {
-  auto coarse = Sphere(24, 16);
+  auto coarse = SphereMesh(24, 16);
   for (const CameraSpec& camera : { Perspective(), Parallel() })
   {
     const SceneSpec scene = ThreeColouredLights();
-    PhongScene gouraud(coarse, scene, Warm(), camera, VTK_GOURAUD);
+    PhongScene gouraud(coarse, scene, WarmMaterial(), camera, VTK_GOURAUD);
     const Image image = gouraud.Render();
     EXPECT_NE(gouraud.Mapper->GetShaderConfiguration().find("gouraud"), std::string::npos);
-    ExpectAgreement(image, RayCastMesh(scene, Warm(), camera, coarse, true, Size, Size), 1.0, 3.0,
-      camera.Parallel ? "gouraud, parallel" : "gouraud, perspective");
+    ExpectAgreement(image, RayCastMesh(scene, WarmMaterial(), camera, coarse, true, Size, Size),
+      1.0, 3.0, camera.Parallel ? "gouraud, parallel" : "gouraud, perspective");
     const Agreement phong =
-      Compare(image, AnalyticSphere(scene, Warm(), camera, { 0, 0, 0 }, 0.5, Size, Size));
+      Compare(image, AnalyticSphere(scene, WarmMaterial(), camera, { 0, 0, 0 }, 0.5, Size, Size));
     EXPECT_GT(phong.Max, 20) << "Gouraud on 24 x 16 facets should differ from the smooth sphere: "
                              << phong.Describe();
   }
@@ -238,7 +215,7 @@ TEST_F(PhongMapper, GouraudMatchesPerVertexEvaluationWithInterpolatedColours)
 // vtkPolygonNormals), the model evaluated per fragment.
 TEST_F(PhongMapper, FlatMatchesPerFaceEvaluation)
 {
-  auto coarse = Sphere(24, 16);
+  auto coarse = SphereMesh(24, 16);
   vtkNew<vtkPolygonNormals> normals;
   normals->SetInputData(coarse);
   normals->ComputeCellNormalsOn();
@@ -253,13 +230,14 @@ TEST_F(PhongMapper, FlatMatchesPerFaceEvaluation)
   for (vtkPolyData* mesh : { coarse.Get(), withCellNormals.Get() })
   {
     const bool cellNormals = mesh == withCellNormals.Get();
-    PhongScene flat(mesh, scene, Warm(), Perspective(), VTK_FLAT);
+    PhongScene flat(mesh, scene, WarmMaterial(), Perspective(), VTK_FLAT);
     const Image image = flat.Render();
     const std::string configuration = flat.Mapper->GetShaderConfiguration();
     EXPECT_EQ(configuration.find("derivative-normals") != std::string::npos, !cellNormals)
       << configuration;
-    ExpectAgreement(image, RayCastMesh(scene, Warm(), Perspective(), coarse, false, Size, Size),
-      1.0, 3.0, cellNormals ? "flat, cell normals" : "flat, derivatives");
+    ExpectAgreement(image,
+      RayCastMesh(scene, WarmMaterial(), Perspective(), coarse, false, Size, Size), 1.0, 3.0,
+      cellNormals ? "flat, cell normals" : "flat, derivatives");
   }
 }
 
@@ -281,7 +259,7 @@ TEST_F(PhongMapper, RedSurfaceUnderBlueLightIsBlack)
   red.Specular = 1;
   red.SpecularPower = 10;
   red.AmbientColor = red.DiffuseColor = red.SpecularColor = { 1, 0, 0 };
-  PhongScene phong(Sphere(64, 32), scene, red, Perspective(), VTK_PHONG);
+  PhongScene phong(SphereMesh(64, 32), scene, red, Perspective(), VTK_PHONG);
   const Image image = phong.Render();
   const Reference sphere = AnalyticSphere(scene, red, Perspective(), { 0, 0, 0 }, 0.5, Size, Size);
   int pixels = 0;
@@ -313,7 +291,7 @@ TEST_F(PhongMapper, ColourProductsAreComponentWise)
   scene.Lights.push_back(light);
   MaterialSpec m;
   m.DiffuseColor = { 0.8, 0.4, 0.2 };
-  PhongScene phong(Sphere(64, 32), scene, m, Parallel(), VTK_PHONG);
+  PhongScene phong(SphereMesh(64, 32), scene, m, Parallel(), VTK_PHONG);
   const Image image = phong.Render();
   const double expected[3] = { 0.4, 0.4, 0.05 };
   for (int c = 0; c < 3; ++c)
@@ -332,9 +310,9 @@ TEST_F(PhongMapper, LightBehindTheSurfaceLeavesOnlyTheAmbientTerm)
   behind.Ambient = { 0.1, 0.2, 0.3 };
   scene.Lights.push_back(behind);
   scene.RendererAmbient = { 0.3, 0.2, 0.1 };
-  MaterialSpec m = Warm();
+  MaterialSpec m = WarmMaterial();
   m.Ambient = 0.5;
-  PhongScene phong(Sphere(64, 32), scene, m, Parallel(), VTK_PHONG);
+  PhongScene phong(SphereMesh(64, 32), scene, m, Parallel(), VTK_PHONG);
   const Image image = phong.Render();
   // ka*Ia = 0.5*(0.9, 0.6, 0.3)*(0.4, 0.4, 0.4)
   const double ambient[3] = { 0.18, 0.12, 0.06 };
@@ -372,7 +350,7 @@ TEST_F(PhongMapper, HighlightSitsWhereVDotRIsLargest)
   shiny.Diffuse = 0;
   shiny.Specular = 1;
   shiny.SpecularPower = 200;
-  PhongScene phong(Sphere(256, 128), scene, shiny, Parallel(), VTK_PHONG);
+  PhongScene phong(SphereMesh(256, 128), scene, shiny, Parallel(), VTK_PHONG);
   const Image image = phong.Render();
   int bx = -1, by = -1, best = -1;
   for (int y = 0; y < Size; ++y)
@@ -429,9 +407,9 @@ TEST_F(PhongMapper, BackFacesFollowTheRenderersTwoSidedLighting)
 // The shaders hold only what the scene uses.
 TEST_F(PhongMapper, DiffuseOnlySceneHasNoSpecularCode)
 {
-  MaterialSpec matte = Warm();
+  MaterialSpec matte = WarmMaterial();
   matte.Specular = 0;
-  PhongScene phong(Sphere(32, 16), OneWhiteLight(), matte, Perspective(), VTK_PHONG);
+  PhongScene phong(SphereMesh(32, 16), OneWhiteLight(), matte, Perspective(), VTK_PHONG);
   phong.Render();
   const std::string fs = phong.Mapper->GetFragmentShaderSource();
   ASSERT_FALSE(fs.empty());
@@ -444,7 +422,8 @@ TEST_F(PhongMapper, DiffuseOnlySceneHasNoSpecularCode)
 
 TEST_F(PhongMapper, ShadersHoldExactlyTheScenesLightsAndKinds)
 {
-  PhongScene phong(Sphere(32, 16), ThreeColouredLights(), Warm(), Perspective(), VTK_PHONG);
+  PhongScene phong(
+    SphereMesh(32, 16), ThreeColouredLights(), WarmMaterial(), Perspective(), VTK_PHONG);
   phong.Render();
   const std::string fs = phong.Mapper->GetFragmentShaderSource();
   EXPECT_NE(fs.find("// light 0: directional"), std::string::npos) << fs;
@@ -455,7 +434,7 @@ TEST_F(PhongMapper, ShadersHoldExactlyTheScenesLightsAndKinds)
   EXPECT_EQ(fs.find("lightColor"), std::string::npos) << "none of VTK's own light code";
 
   // One directional light: no attenuation or cone code at all.
-  PhongScene one(Sphere(32, 16), OneWhiteLight(), Warm(), Perspective(), VTK_PHONG);
+  PhongScene one(SphereMesh(32, 16), OneWhiteLight(), WarmMaterial(), Perspective(), VTK_PHONG);
   one.Render();
   const std::string single = one.Mapper->GetFragmentShaderSource();
   EXPECT_EQ(single.find("phongAttenuation"), std::string::npos);
@@ -467,7 +446,8 @@ TEST_F(PhongMapper, ShadersHoldExactlyTheScenesLightsAndKinds)
 
 TEST_F(PhongMapper, GouraudEvaluatesInTheVertexShaderOnly)
 {
-  PhongScene gouraud(Sphere(32, 16), OneWhiteLight(), Warm(), Perspective(), VTK_GOURAUD);
+  PhongScene gouraud(
+    SphereMesh(32, 16), OneWhiteLight(), WarmMaterial(), Perspective(), VTK_GOURAUD);
   gouraud.Render();
   const std::string vs = gouraud.Mapper->GetVertexShaderSource();
   const std::string fs = gouraud.Mapper->GetFragmentShaderSource();
@@ -480,7 +460,7 @@ TEST_F(PhongMapper, GouraudEvaluatesInTheVertexShaderOnly)
 
 TEST_F(PhongMapper, ShadersAreRebuiltOnlyWhenTheConfigurationChanges)
 {
-  PhongScene phong(Sphere(32, 16), OneWhiteLight(), Warm(), Perspective(), VTK_PHONG);
+  PhongScene phong(SphereMesh(32, 16), OneWhiteLight(), WarmMaterial(), Perspective(), VTK_PHONG);
   phong.Render();
   const int first = phong.Mapper->GetShaderRebuilds();
   EXPECT_GE(first, 1);
@@ -506,18 +486,18 @@ TEST_F(PhongMapper, ShadersAreRebuiltOnlyWhenTheConfigurationChanges)
 TEST_F(PhongMapper, SmoothShadingWithoutPointNormalsFallsBackToFlatWithOneWarning)
 {
   vtkNew<vtkPolyData> bare;
-  bare->ShallowCopy(Sphere(24, 16));
+  bare->ShallowCopy(SphereMesh(24, 16));
   bare->GetPointData()->SetNormals(nullptr);
   MessageCatcher messages;
-  PhongScene phong(bare, ThreeColouredLights(), Warm(), Perspective(), VTK_PHONG);
+  PhongScene phong(bare, ThreeColouredLights(), WarmMaterial(), Perspective(), VTK_PHONG);
   const Image image = phong.Render();
   phong.Render();
   ASSERT_EQ(messages.Warnings().size(), 1u);
   EXPECT_NE(messages.Warnings()[0].find("point normals"), std::string::npos);
   EXPECT_NE(phong.Mapper->GetShaderConfiguration().find("flat"), std::string::npos);
   ExpectAgreement(image,
-    RayCastMesh(ThreeColouredLights(), Warm(), Perspective(), bare, false, Size, Size), 1.0, 3.0,
-    "fallback to flat");
+    RayCastMesh(ThreeColouredLights(), WarmMaterial(), Perspective(), bare, false, Size, Size), 1.0,
+    3.0, "fallback to flat");
 }
 
 // Presets set the material as documented, keeping the diffuse colour.
@@ -554,7 +534,7 @@ TEST_F(PhongMapper, SceneAmbientIsTheLightTimesTheMeanDiffuseReflectance)
   m.AmbientColor = { 1, 1, 1 };
   m.Diffuse = 0.5;
   m.DiffuseColor = { 0.2, 0.4, 0.8 };
-  PhongScene phong(Sphere(64, 32), scene, m, Parallel(), VTK_PHONG);
+  PhongScene phong(SphereMesh(64, 32), scene, m, Parallel(), VTK_PHONG);
   phong.Mapper->SceneAmbientOn();
   const Image image = phong.Render();
   // Ia = (1, 0.5, 0.5) * 0.5 * (0.2, 0.4, 0.8) = (0.1, 0.1, 0.2); ka = 1.
@@ -570,11 +550,12 @@ namespace
 // The general shader (every term of every light) draws the same image as the specialised one.
 TEST_F(PhongMapper, GeneralShaderDrawsTheSameImage)
 {
-  MaterialSpec matte = Warm();
+  MaterialSpec matte = WarmMaterial();
   matte.Specular = 0;
   for (int interpolation : { VTK_FLAT, VTK_GOURAUD, VTK_PHONG })
   {
-    PhongScene phong(Sphere(48, 24), ThreeColouredLights(), matte, Perspective(), interpolation);
+    PhongScene phong(
+      SphereMesh(48, 24), ThreeColouredLights(), matte, Perspective(), interpolation);
     const Image specialised = phong.Render();
     const std::string lean =
       phong.Mapper->GetFragmentShaderSource() + phong.Mapper->GetVertexShaderSource();
