@@ -1,22 +1,14 @@
 """Headless rendering from Python: after ``import phongvtk`` a plain ``vtkRenderWindow()`` renders
 without an X server, and the two backends, made by name, render a scene to the same pixels."""
 
-import os
 
 import numpy as np
 import pytest
-from vtkmodules.util import numpy_support
-from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkRenderingCore import (
-    vtkActor,
-    vtkPolyDataMapper,
-    vtkRenderer,
-    vtkRenderWindow,
-    vtkWindowToImageFilter,
-)
+from vtkmodules.vtkRenderingCore import vtkRenderWindow
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (VTK's own window registered first)
 
 import phongvtk
+from headless_scene import render_sphere
 
 SIZE = (200, 150)
 
@@ -28,38 +20,11 @@ def no_display(monkeypatch):
     monkeypatch.delenv("PHONGVTK_HEADLESS", raising=False)
 
 
-def render_sphere(window):
-    """A unit-diffuse white sphere facing VTK's headlight: its centre pixel is white (n.l = 1)."""
-    sphere = vtkSphereSource()
-    sphere.SetThetaResolution(48)
-    sphere.SetPhiResolution(32)
-    mapper = vtkPolyDataMapper()
-    mapper.SetInputConnection(sphere.GetOutputPort())
-    actor = vtkActor()
-    actor.SetMapper(mapper)
-    actor.GetProperty().SetAmbient(0.0)
-    actor.GetProperty().SetDiffuse(1.0)
-    actor.GetProperty().SetSpecular(0.0)
-    renderer = vtkRenderer()
-    renderer.AddActor(actor)
-    renderer.SetBackground(0.0, 0.0, 0.0)
-    window.AddRenderer(renderer)
-    window.SetSize(*SIZE)
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGB()
-    grab.ShouldRerenderOff()
-    grab.Update()
-    pixels = numpy_support.vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
-    return pixels.reshape(SIZE[1], SIZE[0], 3).astype(int)
-
-
 def test_plain_render_window_is_headless_without_display():
     window = vtkRenderWindow()
     assert window.IsA("vtkHeadlessRenderWindow"), window.GetClassName()
     assert window.GetClassName() == "vtkHeadlessOSMesaRenderWindow"
-    image = render_sphere(window)
+    image = render_sphere(window, SIZE)
     assert (image[SIZE[1] // 2, SIZE[0] // 2] >= 253).all()
     assert (image[0, 0] == 0).all()
 
@@ -76,8 +41,8 @@ def test_backends_by_name_render_the_same_pixels():
     egl = phongvtk.vtkHeadlessEGLRenderWindow()
     assert osmesa.GetBackendName() == "OSMesa"
     assert egl.GetBackendName() == "EGL"
-    a = render_sphere(osmesa)
-    b = render_sphere(egl)
+    a = render_sphere(osmesa, SIZE)
+    b = render_sphere(egl, SIZE)
     assert np.abs(a - b).max() <= 1
     assert (a[SIZE[1] // 2, SIZE[0] // 2] >= 253).all()
     assert osmesa.GetMultiSamples() == 0 and egl.GetMultiSamples() == 0
