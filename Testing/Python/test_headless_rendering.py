@@ -1,7 +1,6 @@
 """Headless rendering from Python: after ``import phongvtk`` a plain ``vtkRenderWindow()`` renders
 without an X server, and the two backends, made by name, render a scene to the same pixels."""
 
-
 import numpy as np
 import pytest
 from vtkmodules.vtkRenderingCore import vtkRenderWindow
