@@ -419,7 +419,7 @@ bool Configuration::operator==(const Configuration& o) const
   return this->Shading == o.Shading && this->Colours == o.Colours && this->Ambient == o.Ambient &&
     this->Parallel == o.Parallel && this->TwoSided == o.TwoSided &&
     this->DerivativeNormals == o.DerivativeNormals && this->KeepPosition == o.KeepPosition &&
-    this->Lights == o.Lights;
+    this->BlockColours == o.BlockColours && this->Lights == o.Lights;
 }
 
 std::string Configuration::Describe() const
@@ -430,7 +430,8 @@ std::string Configuration::Describe() const
   text << modes[static_cast<int>(this->Shading)] << (this->Parallel ? " parallel" : " perspective")
        << (this->TwoSided ? " two-sided " : " one-sided ")
        << colours[static_cast<int>(this->Colours)] << (this->Ambient ? " ambient" : "")
-       << (this->DerivativeNormals ? " derivative-normals" : "");
+       << (this->DerivativeNormals ? " derivative-normals" : "")
+       << (this->BlockColours ? " block-colours" : "");
   for (std::size_t j = 0; j < this->Lights.size(); ++j)
   {
     const auto& light = this->Lights[j];
@@ -443,19 +444,21 @@ std::string Configuration::Describe() const
 }
 
 //------------------------------------------------------------------------------
-Configuration Configure(const Scene& scene, vtkProperty* front, vtkProperty* back, Mode mode,
-  Material colours, bool derivativeNormals, bool keepPosition, bool specialize)
+Configuration Configure(
+  const Scene& scene, vtkProperty* front, vtkProperty* back, const Request& request)
 {
   Configuration config;
-  config.Shading = mode;
-  config.Colours = colours;
+  config.Shading = request.Shading;
+  config.Colours = request.Colours;
   config.Parallel = scene.Parallel;
   config.TwoSided = scene.TwoSided;
-  config.DerivativeNormals = derivativeNormals;
-  config.KeepPosition = keepPosition;
+  config.DerivativeNormals = request.DerivativeNormals;
+  config.KeepPosition = request.KeepPosition;
+  config.BlockColours = request.BlockColours;
+  const bool specialize = request.Specialize;
 
   // A material colour only counts when it is the material's (not mapped scalars).
-  const bool uniform = colours == Material::Uniform && !back;
+  const bool uniform = request.Colours == Material::Uniform && !back && !request.BlockColours;
   bool ka = false;
   bool kd = false;
   bool ks = false;
@@ -585,10 +588,12 @@ std::string VertexDeclarations(const Configuration& config, bool declareInputs)
   AppendLightDeclarations(glsl, config);
   if (GouraudWholeColour(config))
   {
+    // Point colours of a composite block may be replaced by the block's colour.
+    const bool uniforms = config.Colours == Material::Uniform || config.BlockColours;
     if (config.Ambient)
     {
       glsl << "uniform vec3 phongAmbientLight;\nuniform float ambientIntensity;\n";
-      if (config.Colours == Material::Uniform)
+      if (uniforms)
       {
         glsl << "uniform vec3 ambientColorUniform;\n";
       }
@@ -596,10 +601,15 @@ std::string VertexDeclarations(const Configuration& config, bool declareInputs)
     if (config.AnyDiffuse())
     {
       glsl << "uniform float diffuseIntensity;\n";
-      if (config.Colours == Material::Uniform)
+      if (uniforms)
       {
         glsl << "uniform vec3 diffuseColorUniform;\n";
       }
+    }
+    if (config.Colours == Material::PointColours && config.BlockColours &&
+      (config.Ambient || config.AnyDiffuse()))
+    {
+      glsl << "uniform bool OverridesColor;\n";
     }
   }
   if (config.AnySpecular())
@@ -633,16 +643,24 @@ std::string VertexImplementation(const Configuration& config)
   const bool whole = GouraudWholeColour(config);
   if (whole)
   {
-    const char* colour = config.Colours == Material::PointColours ? "scalarColor.rgb" : nullptr;
+    // The material colour: the property's (or the block's), the point's, or the block's where
+    // it overrides the point colours.
+    auto material = [&config](const std::string& uniform) -> std::string
+    {
+      if (config.Colours != Material::PointColours)
+      {
+        return uniform;
+      }
+      return config.BlockColours ? "(OverridesColor ? " + uniform + " : scalarColor.rgb)"
+                                 : "scalarColor.rgb";
+    };
     if (config.Ambient)
     {
-      glsl << "  vec3 ka = ambientIntensity * " << (colour ? colour : "ambientColorUniform")
-           << ";\n";
+      glsl << "  vec3 ka = ambientIntensity * " << material("ambientColorUniform") << ";\n";
     }
     if (config.AnyDiffuse())
     {
-      glsl << "  vec3 kd = diffuseIntensity * " << (colour ? colour : "diffuseColorUniform")
-           << ";\n";
+      glsl << "  vec3 kd = diffuseIntensity * " << material("diffuseColorUniform") << ";\n";
     }
     if (config.AnySpecular())
     {

@@ -103,6 +103,7 @@ struct Configuration
   bool TwoSided = true;
   bool DerivativeNormals = false; ///< flat without cell normals
   bool KeepPosition = false;      ///< something else in the shaders reads the position
+  bool BlockColours = false;      ///< composite: a block's colours may replace the material's
   std::vector<LightTerms> Lights;
 
   bool AnyDiffuse() const;
@@ -134,13 +135,24 @@ struct Configuration
   std::string Describe() const;
 };
 
+/// What a mapper asks of the model for one primitive.
+struct Request
+{
+  Mode Shading = Mode::Phong;
+  Material Colours = Material::Uniform;
+  bool DerivativeNormals = false; ///< flat without cell normals
+  bool KeepPosition = false;      ///< code that is not ours may read the position
+  bool BlockColours = false;      ///< composite data: per-block colours replace the material's
+  bool Specialize = true;         ///< off: a general shader
+};
+
 /// The configuration for a scene and a material (`back` is the actor's back-face property or
 /// null): a term is present only when its coefficient, its material colour (for a uniform
-/// material) and some light's colour are all non-zero. Without `specialize` every term of every
-/// light is present and positional lights carry attenuation and cone code (a general shader,
-/// for measuring what specialisation saves).
-Configuration Configure(const Scene& scene, vtkProperty* front, vtkProperty* back, Mode mode,
-  Material colours, bool derivativeNormals, bool keepPosition, bool specialize = true);
+/// material without block colours) and some light's colour are all non-zero. Without
+/// `Specialize` every term of every light is present and positional lights carry attenuation
+/// and cone code (a general shader, for measuring what specialisation saves).
+Configuration Configure(
+  const Scene& scene, vtkProperty* front, vtkProperty* back, const Request& request);
 
 /// GLSL for the configuration. Declarations go to //VTK::Light::Dec of the stage that evaluates
 /// the model (and the varyings of the other stage); implementations replace //VTK::Light::Impl.

@@ -46,6 +46,11 @@
 #include <string> // for std::string
 
 class vtkProperty;
+namespace phongvtk
+{
+template <class M>
+struct MapperCore;
+}
 
 class VTKPHONGVTKRENDERING_EXPORT vtkPhongPolyDataMapper : public vtkOpenGLPolyDataMapper
 {
@@ -59,8 +64,8 @@ public:
    * Derive the ambient light from the scene: Ia = (Σ_j Id_j)∘(mean kd over the renderer's
    * visible actors), replacing the renderer's and the lights' ambient colours. Default: off.
    */
-  vtkSetMacro(SceneAmbient, bool);
-  vtkGetMacro(SceneAmbient, bool);
+  virtual void SetSceneAmbient(bool);
+  virtual bool GetSceneAmbient();
   vtkBooleanMacro(SceneAmbient, bool);
   ///@}
 
@@ -70,8 +75,8 @@ public:
    * term of every light is evaluated and the position interpolated (a general shader, for
    * measuring what specialisation saves; the image is the same). Default: on.
    */
-  vtkSetMacro(SpecializeShaders, bool);
-  vtkGetMacro(SpecializeShaders, bool);
+  virtual void SetSpecializeShaders(bool);
+  virtual bool GetSpecializeShaders();
   vtkBooleanMacro(SpecializeShaders, bool);
   ///@}
 
@@ -113,7 +118,7 @@ public:
    * How many times the shader sources of this mapper changed (a new configuration): redrawing
    * an unchanged scene or changing a coefficient that leaves every term present does not count.
    */
-  vtkGetMacro(ShaderRebuilds, int);
+  int GetShaderRebuilds();
 
 protected:
   vtkPhongPolyDataMapper();
@@ -133,16 +138,14 @@ protected:
   void SetLightingShaderParameters(
     vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
-  bool SceneAmbient = false;
-  bool SpecializeShaders = true;
-  int ShaderRebuilds = 0;
-
 private:
   vtkPhongPolyDataMapper(const vtkPhongPolyDataMapper&) = delete;
   void operator=(const vtkPhongPolyDataMapper&) = delete;
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
+  template <class M>
+  friend struct phongvtk::MapperCore;
 };
 
 #endif
