@@ -40,6 +40,7 @@ struct MapperState
   shading::Scene Scene;
   bool WarnedNoPointNormals = false;
   int ShaderRebuilds = 0;
+  int* SharedRebuilds = nullptr; ///< counts the rebuilds instead (a composite mapper's helpers)
 
   // The user's options (a composite mapper copies its own to its helpers).
   bool SceneAmbient = false;
@@ -81,8 +82,7 @@ struct MapperCore
       request.Shading = property->GetInterpolation() == VTK_FLAT ? shading::Mode::Flat
         : property->GetInterpolation() == VTK_GOURAUD            ? shading::Mode::Gouraud
                                                                  : shading::Mode::Phong;
-      if (request.Shading != shading::Mode::Flat &&
-        m.VBOs->GetNumberOfComponents("normalMC") != 3)
+      if (request.Shading != shading::Mode::Flat && m.VBOs->GetNumberOfComponents("normalMC") != 3)
       {
         if (!state.WarnedNoPointNormals)
         {
@@ -101,8 +101,7 @@ struct MapperCore
         request.Colours = shading::Material::PointColours;
       }
       else if ((m.InterpolateScalarsBeforeMapping && m.ColorCoordinates && !m.DrawingVertices) ||
-        (m.HaveCellScalars && !m.DrawingVertices && !m.PointPicking) ||
-        act->GetBackfaceProperty())
+        (m.HaveCellScalars && !m.DrawingVertices && !m.PointPicking) || act->GetBackfaceProperty())
       {
         request.Colours = shading::Material::FragmentOnly;
       }
@@ -136,7 +135,7 @@ struct MapperCore
     const std::string fragment = shaders[vtkShader::Fragment]->GetSource();
     if (vertex != primitive.VertexSource || fragment != primitive.FragmentSource)
     {
-      ++state.ShaderRebuilds;
+      ++(state.SharedRebuilds ? *state.SharedRebuilds : state.ShaderRebuilds);
     }
     primitive.VertexSource = primitive.Active ? vertex : std::string();
     primitive.FragmentSource = primitive.Active ? fragment : std::string();
@@ -188,15 +187,13 @@ struct MapperCore
     // vertex shader computes the position for its own use).
     std::string vs = shaders[vtkShader::Vertex]->GetSource();
     std::string fs = shaders[vtkShader::Fragment]->GetSource();
-    const bool vertexPosition =
-      config.Shading == shading::Mode::Gouraud && config.NeedsPosition();
+    const bool vertexPosition = config.Shading == shading::Mode::Gouraud && config.NeedsPosition();
     vtkShaderProgram::Substitute(vs, "//VTK::Camera::Dec",
       vertexPosition ? "uniform mat4 MCDCMatrix;\nuniform mat4 MCVCMatrix;"
                      : "uniform mat4 MCDCMatrix;");
     vtkShaderProgram::Substitute(
       vs, "//VTK::PositionVC::Impl", "  gl_Position = MCDCMatrix * vertexMC;\n");
-    vtkShaderProgram::Substitute(
-      fs, "//VTK::Camera::Dec", "uniform int cameraParallel;\n", false);
+    vtkShaderProgram::Substitute(fs, "//VTK::Camera::Dec", "uniform int cameraParallel;\n", false);
     shaders[vtkShader::Vertex]->SetSource(vs);
     shaders[vtkShader::Fragment]->SetSource(fs);
   }
@@ -223,8 +220,7 @@ struct MapperCore
       // VTK's normal code declared normalMC and normalMatrix when it ran.
       vtkShaderProgram::Substitute(
         vs, "//VTK::Light::Dec", shading::VertexDeclarations(config, !config.KeepPosition));
-      vtkShaderProgram::Substitute(
-        vs, "//VTK::Light::Impl", shading::VertexImplementation(config));
+      vtkShaderProgram::Substitute(vs, "//VTK::Light::Impl", shading::VertexImplementation(config));
       shaders[vtkShader::Vertex]->SetSource(vs);
       std::string gs = shaders[vtkShader::Geometry]->GetSource();
       if (!gs.empty())
@@ -255,39 +251,39 @@ struct MapperCore
 
 /// Defines the overrides of mapper class `M` as forwards to MapperCore<M>; `STATE` is an
 /// expression naming the class's MapperState (e.g. `this->Internals->State`).
-#define PHONGVTK_MAPPER_CORE_FORWARDS(M, STATE)                                                   \
-  bool M::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)      \
-  {                                                                                               \
-    return phongvtk::MapperCore<M>::GetNeedToRebuildShaders(*this, STATE, cellBO, ren, act);      \
-  }                                                                                               \
-  void M::BuildShaders(                                                                           \
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)              \
-  {                                                                                               \
-    phongvtk::MapperCore<M>::BuildShaders(*this, STATE, shaders, ren, act);                       \
-  }                                                                                               \
-  void M::ReplaceShaderColor(                                                                     \
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)              \
-  {                                                                                               \
-    phongvtk::MapperCore<M>::ReplaceShaderColor(*this, STATE, shaders, ren, act);                 \
-  }                                                                                               \
-  void M::ReplaceShaderNormal(                                                                    \
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)              \
-  {                                                                                               \
-    phongvtk::MapperCore<M>::ReplaceShaderNormal(*this, STATE, shaders, ren, act);                \
-  }                                                                                               \
-  void M::ReplaceShaderLight(                                                                     \
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)              \
-  {                                                                                               \
-    phongvtk::MapperCore<M>::ReplaceShaderLight(*this, STATE, shaders, ren, act);                 \
-  }                                                                                               \
-  void M::ReplaceShaderPositionVC(                                                                \
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)              \
-  {                                                                                               \
-    phongvtk::MapperCore<M>::ReplaceShaderPositionVC(*this, STATE, shaders, ren, act);            \
-  }                                                                                               \
-  void M::SetLightingShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)  \
-  {                                                                                               \
-    phongvtk::MapperCore<M>::SetLightingShaderParameters(*this, STATE, cellBO, ren, act);         \
+#define PHONGVTK_MAPPER_CORE_FORWARDS(M, STATE)                                                    \
+  bool M::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)        \
+  {                                                                                                \
+    return phongvtk::MapperCore<M>::GetNeedToRebuildShaders(*this, STATE, cellBO, ren, act);       \
+  }                                                                                                \
+  void M::BuildShaders(                                                                            \
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)                \
+  {                                                                                                \
+    phongvtk::MapperCore<M>::BuildShaders(*this, STATE, shaders, ren, act);                        \
+  }                                                                                                \
+  void M::ReplaceShaderColor(                                                                      \
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)                \
+  {                                                                                                \
+    phongvtk::MapperCore<M>::ReplaceShaderColor(*this, STATE, shaders, ren, act);                  \
+  }                                                                                                \
+  void M::ReplaceShaderNormal(                                                                     \
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)                \
+  {                                                                                                \
+    phongvtk::MapperCore<M>::ReplaceShaderNormal(*this, STATE, shaders, ren, act);                 \
+  }                                                                                                \
+  void M::ReplaceShaderLight(                                                                      \
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)                \
+  {                                                                                                \
+    phongvtk::MapperCore<M>::ReplaceShaderLight(*this, STATE, shaders, ren, act);                  \
+  }                                                                                                \
+  void M::ReplaceShaderPositionVC(                                                                 \
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)                \
+  {                                                                                                \
+    phongvtk::MapperCore<M>::ReplaceShaderPositionVC(*this, STATE, shaders, ren, act);             \
+  }                                                                                                \
+  void M::SetLightingShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)    \
+  {                                                                                                \
+    phongvtk::MapperCore<M>::SetLightingShaderParameters(*this, STATE, cellBO, ren, act);          \
   }
 
 #endif

@@ -83,11 +83,18 @@ void AppendLight(std::ostringstream& glsl, const Configuration::LightTerms& ligh
     {
       glsl << "    l = normalize(l);\n";
     }
+    std::ostringstream spot;
+    spot << "phongSpotlight(l, phongLightAxisVC" << j << ", phongLightConeCos" << j
+         << ", phongLightExponent" << j << ")";
+    if (light.ConeFromUniform)
+    {
+      // A general shader meets lights without a cone too (cosine below -1).
+      spot.str("(phongLightConeCos" + std::to_string(j) + " < -1.0 ? 1.0 : " + spot.str() + ")");
+    }
     if (light.Attenuated && light.Spot)
     {
-      glsl << "    float a = phongAttenuation(phongLightAttenuation" << j
-           << ", d) * phongSpotlight(l, phongLightAxisVC" << j << ", phongLightConeCos" << j
-           << ", phongLightExponent" << j << ");\n";
+      glsl << "    float a = phongAttenuation(phongLightAttenuation" << j << ", d) * " << spot.str()
+           << ";\n";
     }
     else if (light.Attenuated)
     {
@@ -95,8 +102,7 @@ void AppendLight(std::ostringstream& glsl, const Configuration::LightTerms& ligh
     }
     else if (light.Spot)
     {
-      glsl << "    float a = phongSpotlight(l, phongLightAxisVC" << j << ", phongLightConeCos" << j
-           << ", phongLightExponent" << j << ");\n";
+      glsl << "    float a = " << spot.str() << ";\n";
     }
     if (light.Attenuated || light.Spot)
     {
@@ -341,8 +347,11 @@ Scene GatherScene(vtkRenderer* renderer, bool sceneAmbient)
       // VTK's rule: a cone angle of 90 degrees or more is no cone.
       light.Spot = vtklight->GetConeAngle() < 90;
       Store(axisVC, light.Axis);
-      light.CosCone =
-        static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(vtklight->GetConeAngle())));
+      if (light.Spot)
+      {
+        light.CosCone =
+          static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(vtklight->GetConeAngle())));
+      }
       light.Exponent = static_cast<float>(vtklight->GetExponent());
     }
     scene.Lights.push_back(light);
@@ -485,7 +494,7 @@ Configuration Configure(
     if (!specialize)
     {
       terms.Diffuse = terms.Specular = true;
-      terms.Attenuated = terms.Spot = terms.Positional;
+      terms.Attenuated = terms.Spot = terms.ConeFromUniform = terms.Positional;
     }
     config.Lights.push_back(terms);
   }

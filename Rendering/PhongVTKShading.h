@@ -59,7 +59,7 @@ struct Light
   float Position[3] = { 0, 0, 0 };
   float Axis[3] = { 0, 0, -1 }; ///< spot: unit direction the light shines in
   float Attenuation[3] = { 1, 0, 0 };
-  float CosCone = 0;
+  float CosCone = -2; ///< cosine of the cone angle; below -1: no cone
   float Exponent = 1;
   float Diffuse[3] = { 0, 0, 0 };  ///< Id
   float Specular[3] = { 0, 0, 0 }; ///< Is
@@ -89,11 +89,12 @@ struct Configuration
     bool Headlight = false;
     bool Diffuse = false;
     bool Specular = false;
+    bool ConeFromUniform = false; ///< general shader: the cone uniform says whether there is one
     bool operator==(const LightTerms& o) const
     {
       return this->Positional == o.Positional && this->Attenuated == o.Attenuated &&
         this->Spot == o.Spot && this->Headlight == o.Headlight && this->Diffuse == o.Diffuse &&
-        this->Specular == o.Specular;
+        this->Specular == o.Specular && this->ConeFromUniform == o.ConeFromUniform;
     }
   };
   Mode Shading = Mode::Phong;

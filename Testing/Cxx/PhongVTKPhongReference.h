@@ -113,11 +113,14 @@ inline MaterialSpec WarmMaterial()
   return m;
 }
 
-/// vtkSphereSource's sphere at the origin (2 theta (phi - 2) triangles, point normals).
-inline vtkSmartPointer<vtkPolyData> SphereMesh(int theta, int phi, double radius = 0.5)
+/// vtkSphereSource's sphere (2 theta (phi - 2) triangles, point normals), by default at the
+/// origin.
+inline vtkSmartPointer<vtkPolyData> SphereMesh(
+  int theta, int phi, double radius = 0.5, const Vec& centre = { 0, 0, 0 })
 {
   vtkNew<vtkSphereSource> source;
   source->SetRadius(radius);
+  source->SetCenter(centre.data());
   source->SetThetaResolution(theta);
   source->SetPhiResolution(phi);
   source->Update();

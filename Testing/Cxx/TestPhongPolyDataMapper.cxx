@@ -2,8 +2,7 @@
 // coordinates, double precision, PhongVTKPhongReference.h): Phong shading of a finely
 // tessellated sphere against the exact sphere, Gouraud and flat against their own per-vertex and
 // per-face references; the model's seed facts; the shaders holding only what the scene uses.
-#include "PhongVTKImageRegression.h"
-#include "PhongVTKPhongReference.h"
+#include "PhongVTKPhongScene.h"
 #include "PhongVTKRenderingTestSupport.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkPolygonNormals.h"
@@ -31,110 +30,7 @@ using namespace phongvtk::testing;
 namespace
 {
 
-constexpr int Size = 200;
-
-// One actor drawn by vtkPhongPolyDataMapper in a headless window.
-class PhongScene
-{
-public:
-  PhongScene(vtkPolyData* mesh, const SceneSpec& scene, const MaterialSpec& material,
-    const CameraSpec& camera, int interpolation)
-  {
-    this->Mapper->SetInputData(mesh);
-    this->Actor->SetMapper(this->Mapper);
-    Apply(material, this->Actor->GetProperty());
-    this->Actor->GetProperty()->SetInterpolation(interpolation);
-    this->Renderer->AddActor(this->Actor);
-    this->Renderer->SetBackground(0.2, 0.2, 0.2);
-    Apply(scene, camera, this->Renderer);
-    this->Window->AddRenderer(this->Renderer);
-    this->Window->SetSize(Size, Size);
-  }
-  Image Render()
-  {
-    this->Window->Render();
-    return Capture(this->Window);
-  }
-  vtkNew<vtkPhongPolyDataMapper> Mapper;
-  vtkNew<vtkActor> Actor;
-  vtkNew<vtkRenderer> Renderer;
-  vtkSmartPointer<vtkRenderWindow> Window = vtkSmartPointer<vtkRenderWindow>::New();
-};
-
-class PhongMapper : public ::testing::Test
-{
-protected:
-  void SetUp() override
-  {
-    unsetenv("DISPLAY");
-    unsetenv("PHONGVTK_HEADLESS");
-  }
-};
-
-SceneSpec OneWhiteLight()
-{
-  SceneSpec s;
-  LightSpec light;
-  light.Position = { 1, 1, 2 };
-  s.Lights.push_back(light);
-  s.RendererAmbient = { 0.2, 0.2, 0.2 };
-  return s;
-}
-
-// Three coloured lights with their own ambient and specular colours: directional, positional
-// with attenuation (no cone), and a spot (cone and exponent) covering the sphere.
-SceneSpec ThreeColouredLights()
-{
-  SceneSpec s;
-  LightSpec key;
-  key.Position = { -1, 1, 2 };
-  key.Diffuse = { 1, 0.9, 0.8 };
-  key.Specular = { 0.9, 0.9, 1 };
-  key.Ambient = { 0.1, 0.05, 0 };
-  key.Intensity = 0.8;
-  LightSpec fill;
-  fill.Positional = true;
-  fill.Position = { 1.5, 0.5, 2 };
-  fill.Diffuse = { 0.3, 0.5, 1 };
-  fill.Specular = { 0.5, 0.7, 1 };
-  fill.Intensity = 1.2;
-  fill.Attenuation = { 1, 0.2, 0.05 };
-  fill.ConeAngle = 180;
-  LightSpec spot;
-  spot.Positional = true;
-  spot.Position = { 0, 2.5, 2.5 };
-  spot.Diffuse = { 0.4, 1, 0.4 };
-  spot.Specular = { 0.2, 1, 0.2 };
-  spot.Intensity = 0.9;
-  spot.ConeAngle = 40;
-  spot.Exponent = 4;
-  s.Lights = { key, fill, spot };
-  s.RendererAmbient = { 0.1, 0.1, 0.15 };
-  return s;
-}
-
-CameraSpec Perspective()
-{
-  return CameraSpec();
-}
-
-CameraSpec Parallel()
-{
-  CameraSpec c;
-  c.Parallel = true;
-  c.ParallelScale = 0.6;
-  return c;
-}
-
-void ExpectAgreement(
-  const Image& image, const Reference& reference, double rms, double max, const std::string& what)
-{
-  const Agreement agreement = Compare(image, reference);
-  std::cout << "  " << what << ": " << agreement.Describe() << "\n";
-  EXPECT_GT(agreement.Pixels, 3000) << what;
-  EXPECT_LE(agreement.RMS, rms) << what << ": " << agreement.Describe();
-  EXPECT_LE(agreement.Max, max) << what << ": " << agreement.Describe();
-}
+using PhongScene = BasicPhongScene<vtkPhongPolyDataMapper>;
 
 //------------------------------------------------------------------------------
 // Phong shading of a finely tessellated sphere is the exact sphere's model within RMS 1 LSB

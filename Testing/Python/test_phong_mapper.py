@@ -1,10 +1,12 @@
-"""vtkPhongPolyDataMapper from Python: the wrapped mapper draws the model (checked at a pixel whose
-normal faces a light behind the camera under parallel projection, n.l = 1 and v.r = 1), the
-presets are callable by name, and the generated shader is inspectable."""
+"""vtkPhongPolyDataMapper and vtkPhongCompositePolyDataMapper from Python: the wrapped mappers draw
+the model (checked at a pixel whose normal faces a light behind the camera under parallel
+projection, n.l = 1 and v.r = 1), the presets are callable by name, and the generated shader is
+inspectable."""
 
 import numpy as np
 import pytest
 from vtkmodules.util import numpy_support
+from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkRenderingCore import (
     vtkActor,
@@ -27,12 +29,19 @@ def no_display(monkeypatch):
     monkeypatch.delenv("PHONGVTK_HEADLESS", raising=False)
 
 
-def render(interpolation, specular=0.4):
+def render(interpolation, specular=0.4, composite=False):
     sphere = vtkSphereSource()
     sphere.SetThetaResolution(128)
     sphere.SetPhiResolution(64)
-    mapper = phongvtk.vtkPhongPolyDataMapper()
-    mapper.SetInputConnection(sphere.GetOutputPort())
+    if composite:
+        sphere.Update()
+        blocks = vtkMultiBlockDataSet()
+        blocks.SetBlock(0, sphere.GetOutput())
+        mapper = phongvtk.vtkPhongCompositePolyDataMapper()
+        mapper.SetInputDataObject(blocks)
+    else:
+        mapper = phongvtk.vtkPhongPolyDataMapper()
+        mapper.SetInputConnection(sphere.GetOutputPort())
     actor = vtkActor()
     actor.SetMapper(mapper)
     prop = actor.GetProperty()
@@ -71,8 +80,9 @@ def render(interpolation, specular=0.4):
     return mapper, pixels.reshape(SIZE, SIZE, 3).astype(float)
 
 
-def test_centre_pixel_is_the_model():
-    mapper, image = render(2)
+@pytest.mark.parametrize("composite", [False, True])
+def test_centre_pixel_is_the_model(composite):
+    mapper, image = render(2, composite=composite)
     ka, ia = 0.1 * np.ones(3), np.array([0.2, 0.4, 0.6])
     kd, i_d = 0.5 * np.array([0.8, 0.4, 0.2]), np.array([1.0, 0.5, 1.0])
     ks, i_s = 0.4 * np.array([0.5, 1.0, 0.5]), np.array([1.0, 1.0, 0.5])
@@ -90,8 +100,9 @@ def test_flat_and_gouraud_are_selected_by_the_property(interpolation):
     assert image[SIZE // 2, SIZE // 2].max() > 100
 
 
-def test_no_specular_code_without_a_specular_term():
-    mapper, _ = render(2, specular=0.0)
+@pytest.mark.parametrize("composite", [False, True])
+def test_no_specular_code_without_a_specular_term(composite):
+    mapper, _ = render(2, specular=0.0, composite=composite)
     assert "phongSpecular" not in mapper.GetFragmentShaderSource()
     assert "phongDiffuse" in mapper.GetFragmentShaderSource()
 
