@@ -2,6 +2,7 @@
 // coordinates, double precision, PhongVTKPhongReference.h): Phong shading of a finely
 // tessellated sphere against the exact sphere, Gouraud and flat against their own per-vertex and
 // per-face references; the model's seed facts; the shaders holding only what the scene uses.
+#include "PhongVTKOFFReader.h"
 #include "PhongVTKPhongScene.h"
 #include "PhongVTKRenderingTestSupport.h"
 #include "vtkPhongPolyDataMapper.h"
@@ -13,6 +14,7 @@
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -464,4 +466,70 @@ TEST_F(PhongMapper, GeneralShaderDrawsTheSameImage)
     EXPECT_NE(full.find("phongSpecular("), std::string::npos);
   }
 }
+}
+
+//------------------------------------------------------------------------------
+// Image baselines for a real mesh: CGAL's bunny (bunny00.off) with vtkPolygonNormals' cell and
+// point normals under three coloured lights, in the three shading modes. The modes must differ
+// visibly from each other (flat facets, Gouraud's interpolated highlights, Phong's).
+namespace
+{
+vtkSmartPointer<vtkPolyData> UnitBunny()
+{
+  std::string error;
+  auto bunny = phongvtk_test::ReadOFF(phongvtk_test::CGALMeshPath("bunny00.off"), &error);
+  if (!bunny)
+  {
+    ADD_FAILURE() << error;
+    return nullptr;
+  }
+  // Centred at the origin, diagonal of the bounds 2: where the scenes' lights expect it.
+  double bounds[6];
+  bunny->GetBounds(bounds);
+  const double centre[3] = { (bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,
+    (bounds[4] + bounds[5]) / 2 };
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  vtkPoints* points = bunny->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    for (int c = 0; c < 3; ++c)
+    {
+      p[c] = (p[c] - centre[c]) * 2 / diagonal;
+    }
+    points->SetPoint(i, p);
+  }
+  vtkNew<vtkPolygonNormals> normals;
+  normals->SetInputData(bunny);
+  normals->ComputeCellNormalsOn();
+  normals->ComputePointNormalsOn();
+  normals->Update();
+  return normals->GetOutput();
+}
+}
+
+TEST_F(PhongMapper, BunnyMatchesItsBaselinesInTheThreeModes)
+{
+  PHONGVTK_SKIP_WITHOUT_CGAL_MESHES();
+  auto bunny = UnitBunny();
+  ASSERT_NE(bunny, nullptr);
+  ASSERT_NE(bunny->GetPointData()->GetNormals(), nullptr);
+  ASSERT_NE(bunny->GetCellData()->GetNormals(), nullptr);
+  const char* names[] = { "PhongBunnyFlat", "PhongBunnyGouraud", "PhongBunnyPhong" };
+  const char* modes[] = { "flat ", "gouraud ", "phong " };
+  Image images[3];
+  for (int interpolation : { VTK_FLAT, VTK_GOURAUD, VTK_PHONG })
+  {
+    PhongScene scene(bunny, ThreeColouredLights(), WarmMaterial(), Perspective(), interpolation);
+    scene.Window->SetSize(320, 320);
+    images[interpolation] = scene.Render();
+    const std::string configuration = scene.Mapper->GetShaderConfiguration();
+    EXPECT_EQ(configuration.find(modes[interpolation]), 0u) << configuration;
+    EXPECT_TRUE(MatchesBaseline(images[interpolation], names[interpolation]));
+  }
+  EXPECT_GT(MaxAbsDifference(images[VTK_FLAT], images[VTK_PHONG]), 20);
+  EXPECT_GT(MaxAbsDifference(images[VTK_GOURAUD], images[VTK_PHONG]), 10);
 }
