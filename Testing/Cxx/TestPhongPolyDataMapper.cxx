@@ -10,6 +10,7 @@
 
 #include "vtkActor.h"
 #include "vtkCellData.h"
+#include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
@@ -85,6 +86,70 @@ TEST_F(PhongMapper, HeadlightFollowsTheSameFormula)
   ExpectAgreement(image,
     AnalyticSphere(headlight, WarmMaterial(), Perspective(), { 0, 0, 0 }, 0.5, Size, Size), 1.0,
     3.0, "headlight");
+}
+
+// Camera lights are given in the camera's frame: (0, 0, 1) is the camera, (0, 0, 0) the focal
+// point, x and y the view's right and up scaled by the distance d to the focal point, so a
+// camera-frame point (x, y, z) is the world point P + d x right + d y up + d (1 - z) forward
+// (vtkLight, vtkCamera::GetCameraLightTransformMatrix). The same formula holds for them once
+// they are placed in the world: checked with a directional and an attenuated positional camera
+// light, from an oblique camera.
+TEST_F(PhongMapper, CameraLightsFollowTheSameFormula)
+{
+  CameraSpec camera;
+  camera.Position = { 2.5, 1.5, 2.5 };
+  camera.FocalPoint = { 0, 0, 0 };
+  camera.ViewUp = { 0, 1, 0 };
+  const Vec forward = Unit(camera.FocalPoint - camera.Position);
+  const Vec right = Unit(Cross(forward, camera.ViewUp));
+  const Vec up = Cross(right, forward);
+  const Vec toFocal = camera.FocalPoint - camera.Position;
+  const double d = std::sqrt(Dot(toFocal, toFocal));
+  auto world = [&](const Vec& p)
+  {
+    return camera.Position + (d * p[0]) * right + (d * p[1]) * up + (d * (1 - p[2])) * forward;
+  };
+
+  SceneSpec scene;
+  scene.RendererAmbient = { 0.1, 0.1, 0.1 };
+  LightSpec key; // directional, from above right of the camera
+  key.Position = world({ 0.6, 0.8, 1 });
+  key.FocalPoint = world({ 0, 0, 0 });
+  key.Diffuse = { 1, 0.8, 0.6 };
+  LightSpec fill; // positional, attenuated, left of the view
+  fill.Positional = true;
+  fill.Position = world({ -0.4, 0.1, 0.7 });
+  fill.FocalPoint = world({ 0, 0, 0 });
+  fill.Diffuse = { 0.4, 0.6, 1 };
+  fill.Specular = { 0.6, 0.8, 1 };
+  fill.Attenuation = { 1, 0.1, 0.02 };
+  fill.ConeAngle = 180;
+  scene.Lights = { key, fill };
+
+  SceneSpec none;
+  none.RendererAmbient = scene.RendererAmbient;
+  PhongScene phong(SphereMesh(256, 128), none, WarmMaterial(), camera, VTK_PHONG);
+  phong.Renderer->RemoveAllLights();
+  const Vec cameraFrame[2][2] = { { { 0.6, 0.8, 1 }, { 0, 0, 0 } },
+    { { -0.4, 0.1, 0.7 }, { 0, 0, 0 } } };
+  for (int j = 0; j < 2; ++j)
+  {
+    const LightSpec& spec = scene.Lights[j];
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToCameraLight();
+    light->SetPositional(spec.Positional);
+    light->SetPosition(cameraFrame[j][0].data());
+    light->SetFocalPoint(cameraFrame[j][1].data());
+    light->SetDiffuseColor(spec.Diffuse.data());
+    light->SetSpecularColor(spec.Specular.data());
+    light->SetAttenuationValues(spec.Attenuation.data());
+    light->SetConeAngle(spec.ConeAngle);
+    phong.Renderer->AddLight(light);
+  }
+  const Image image = phong.Render();
+  ExpectAgreement(image,
+    AnalyticSphere(scene, WarmMaterial(), camera, { 0, 0, 0 }, 0.5, Size, Size), 1.0, 3.0,
+    "camera lights");
 }
 
 //------------------------------------------------------------------------------
