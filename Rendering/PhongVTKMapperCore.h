@@ -15,7 +15,9 @@
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPolyData.h"
 #include "vtkProperty.h"
+#include "vtkRenderer.h"
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
 #include "vtkShaderProperty.h"
@@ -113,6 +115,16 @@ struct MapperCore
         (keys && keys->Has(vtkOpenGLRenderPass::RenderPasses())) || m.DrawingEdges(ren, act);
       request.DerivativeNormals = request.Shading == shading::Mode::Flat && !m.HaveCellNormals;
       request.BlockColours = state.BlockColours;
+      // Vertex-bound when the triangles are few pixels each (on average at most 8 pixels of
+      // the viewport per triangle).
+      int width = 0;
+      int height = 0;
+      ren->GetTiledSize(&width, &height);
+      const vtkIdType triangles = m.CurrentInput
+        ? m.CurrentInput->GetNumberOfPolys() + m.CurrentInput->GetNumberOfStrips()
+        : 0;
+      request.SmallTriangles =
+        triangles > 0 && static_cast<double>(width) * height <= 8.0 * triangles;
       request.Specialize = state.SpecializeShaders;
       config = shading::Configure(state.Scene, property, act->GetBackfaceProperty(), request);
     }

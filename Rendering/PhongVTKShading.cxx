@@ -6,6 +6,11 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -16,6 +21,9 @@
 #include "PhongSpecular.h"
 #include "PhongSpotlight.h"
 
+#include "vtk_glew.h"
+
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -191,6 +199,8 @@ void AppendLightDeclarations(std::ostringstream& glsl, const Configuration& conf
 }
 
 // The eye vector v: from the surface to the eye, or the direction of projection reversed.
+// `position` is null in the fragment shader when the position is not interpolated: then the
+// reversed ray through the pixel centre, which passes through the surface point.
 void AppendEyeVector(std::ostringstream& glsl, const Configuration& config, const char* position)
 {
   if (!config.NeedsEyeVector())
@@ -200,6 +210,10 @@ void AppendEyeVector(std::ostringstream& glsl, const Configuration& config, cons
   if (config.Parallel)
   {
     glsl << "  vec3 v = vec3(0.0, 0.0, 1.0);\n";
+  }
+  else if (!position)
+  {
+    glsl << "  vec3 v = normalize(vec3(gl_FragCoord.xy * phongEyeRay.xy + phongEyeRay.zw, 1.0));\n";
   }
   else
   {
@@ -280,6 +294,81 @@ std::vector<std::string> GouraudVaryings(const Configuration& config)
   return names;
 }
 
+// The eye ray of a pixel centre (x, y) in window coordinates: the points of ndc depth -1 and +1
+// on the pixel's ray are linear in (x, y, 1) (their w is constant across a plane of constant
+// depth), and v points from the far one to the near one, i.e. toward the eye: v = normalize(M
+// (x, y, 1)). For vtkCamera's frusta M is diagonal but for the offsets of the last column, and
+// `ray` holds (M00, M11, M02, M12) / M22; false (use the position) for any other projection.
+bool EyeRay(vtkRenderer* renderer, float ray[4])
+{
+  // The projection VTK's shaders use (vtkOpenGLCamera's VCDC matrix, transposed for GL).
+  vtkMatrix4x4* wcvc;
+  vtkMatrix3x3* normals;
+  vtkMatrix4x4* vcdc;
+  vtkMatrix4x4* wcdc;
+  auto* camera = vtkOpenGLCamera::SafeDownCast(renderer->GetActiveCamera());
+  vtkNew<vtkMatrix4x4> inverse;
+  if (camera)
+  {
+    camera->GetKeyMatrices(renderer, wcvc, normals, vcdc, wcdc);
+    vtkMatrix4x4::Transpose(vcdc, inverse);
+  }
+  else
+  {
+    inverse->DeepCopy(renderer->GetActiveCamera()->GetProjectionTransformMatrix(
+      renderer->GetTiledAspectRatio(), -1, 1));
+  }
+  inverse->Invert();
+  // The GL viewport the renderer set: window coordinates to ndc.
+  int viewport[4] = { 0, 0, 1, 1 };
+  if (auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()))
+  {
+    window->GetState()->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  }
+  const double sx = 2.0 / std::max(viewport[2], 1);
+  const double sy = 2.0 / std::max(viewport[3], 1);
+  const double ox = -viewport[0] * sx - 1;
+  const double oy = -viewport[1] * sy - 1;
+  // Homogeneous point of ndc depth z on the ray of (x, y): columns for x, y and 1.
+  auto column = [&](int row, int which, double z)
+  {
+    const double* m = inverse->GetData() + 4 * row;
+    switch (which)
+    {
+      case 0:
+        return m[0] * sx;
+      case 1:
+        return m[1] * sy;
+      default:
+        return m[0] * ox + m[1] * oy + m[2] * z + m[3];
+    }
+  };
+  const double wNear = column(3, 2, -1.0);
+  const double wFar = column(3, 2, 1.0);
+  double m[3][3]; // m[row][which]
+  double largest = 0;
+  for (int which = 0; which < 3; ++which)
+  {
+    for (int row = 0; row < 3; ++row)
+    {
+      m[row][which] = column(row, which, -1.0) / wNear - column(row, which, 1.0) / wFar;
+      largest = std::max(largest, std::abs(m[row][which]));
+    }
+  }
+  const double tiny = 1e-12 * largest;
+  if (!(m[2][2] > tiny) || std::abs(m[0][1]) > tiny || std::abs(m[1][0]) > tiny ||
+    std::abs(m[2][0]) > tiny || std::abs(m[2][1]) > tiny || std::abs(column(3, 0, 0)) > tiny ||
+    std::abs(column(3, 1, 0)) > tiny)
+  {
+    return false;
+  }
+  ray[0] = static_cast<float>(m[0][0] / m[2][2]);
+  ray[1] = static_cast<float>(m[1][1] / m[2][2]);
+  ray[2] = static_cast<float>(m[0][2] / m[2][2]);
+  ray[3] = static_cast<float>(m[1][2] / m[2][2]);
+  return true;
+}
+
 }
 
 //------------------------------------------------------------------------------
@@ -290,6 +379,10 @@ Scene GatherScene(vtkRenderer* renderer, bool sceneAmbient)
   scene.Parallel = camera->GetParallelProjection() != 0;
   scene.TwoSided = renderer->GetTwoSidedLighting() != 0;
   vtkTransform* view = camera->GetModelViewTransformObject();
+  if (!scene.Parallel)
+  {
+    scene.EyeRayValid = EyeRay(renderer, scene.EyeRay);
+  }
 
   double ambient[3];
   renderer->GetAmbient(ambient);
@@ -428,7 +521,8 @@ bool Configuration::operator==(const Configuration& o) const
   return this->Shading == o.Shading && this->Colours == o.Colours && this->Ambient == o.Ambient &&
     this->Parallel == o.Parallel && this->TwoSided == o.TwoSided &&
     this->DerivativeNormals == o.DerivativeNormals && this->KeepPosition == o.KeepPosition &&
-    this->BlockColours == o.BlockColours && this->Lights == o.Lights;
+    this->BlockColours == o.BlockColours && this->EyeFromFragCoord == o.EyeFromFragCoord &&
+    this->Lights == o.Lights;
 }
 
 std::string Configuration::Describe() const
@@ -440,7 +534,8 @@ std::string Configuration::Describe() const
        << (this->TwoSided ? " two-sided " : " one-sided ")
        << colours[static_cast<int>(this->Colours)] << (this->Ambient ? " ambient" : "")
        << (this->DerivativeNormals ? " derivative-normals" : "")
-       << (this->BlockColours ? " block-colours" : "");
+       << (this->BlockColours ? " block-colours" : "")
+       << (this->EyeFromFragCoord ? " eye-from-fragcoord" : "");
   for (std::size_t j = 0; j < this->Lights.size(); ++j)
   {
     const auto& light = this->Lights[j];
@@ -503,6 +598,9 @@ Configuration Configure(
     config.Ambient = true;
     config.KeepPosition = true;
   }
+  config.EyeFromFragCoord = request.SmallTriangles && scene.EyeRayValid && !scene.Parallel &&
+    config.Shading != Mode::Gouraud && config.AnySpecular() && !config.AnyPositional() &&
+    !config.KeepPosition && !config.DerivativeNormals;
   return config;
 }
 
@@ -525,6 +623,10 @@ std::string FragmentDeclarations(const Configuration& config)
   else
   {
     AppendLightDeclarations(glsl, config);
+    if (config.EyeFromFragCoord)
+    {
+      glsl << "uniform vec4 phongEyeRay;\n";
+    }
   }
   return glsl.str();
 }
@@ -539,7 +641,7 @@ std::string FragmentImplementation(const Configuration& config)
     {
       glsl << "  vec3 n = normalVCVSOutput;\n";
     }
-    AppendEyeVector(glsl, config, "vertexVC.xyz");
+    AppendEyeVector(glsl, config, config.EyeFromFragCoord ? nullptr : "vertexVC.xyz");
     AppendAccumulators(glsl, config);
     if (lit && !config.TwoSided)
     {
@@ -734,6 +836,13 @@ void SetUniforms(vtkShaderProgram* program, const Configuration& config, const S
       program->SetUniform3f(name.c_str(), value);
     }
   };
+  auto set4 = [program](const std::string& name, const float value[4])
+  {
+    if (program->IsUniformUsed(name.c_str()))
+    {
+      program->SetUniform4f(name.c_str(), value);
+    }
+  };
   auto set1 = [program](const std::string& name, float value)
   {
     if (program->IsUniformUsed(name.c_str()))
@@ -744,6 +853,10 @@ void SetUniforms(vtkShaderProgram* program, const Configuration& config, const S
   if (config.Ambient)
   {
     set3("phongAmbientLight", scene.Ambient);
+  }
+  if (config.EyeFromFragCoord)
+  {
+    set4("phongEyeRay", scene.EyeRay);
   }
   for (std::size_t j = 0; j < config.Lights.size() && j < scene.Lights.size(); ++j)
   {

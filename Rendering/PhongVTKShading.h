@@ -72,6 +72,12 @@ struct Scene
   float Ambient[3] = { 0, 0, 0 };
   bool Parallel = false;
   bool TwoSided = true;
+  /// Perspective: the eye vector of a fragment at window coordinates (x, y) is
+  /// normalize((x EyeRay[0] + EyeRay[2], y EyeRay[1] + EyeRay[3], 1)), the reversed ray through
+  /// the pixel (from the GL viewport and the projection VTK's shaders use); valid when the
+  /// projection has the form of vtkCamera's frusta.
+  float EyeRay[4] = { 0, 0, 0, 0 };
+  bool EyeRayValid = false;
 };
 
 /// Lights of `renderer` in the view coordinates of its active camera, and Ia (the renderer's
@@ -105,6 +111,7 @@ struct Configuration
   bool DerivativeNormals = false; ///< flat without cell normals
   bool KeepPosition = false;      ///< something else in the shaders reads the position
   bool BlockColours = false;      ///< composite: a block's colours may replace the material's
+  bool EyeFromFragCoord = false;  ///< perspective eye vector from gl_FragCoord, not the position
   std::vector<LightTerms> Lights;
 
   bool AnyDiffuse() const;
@@ -128,7 +135,7 @@ struct Configuration
   bool FragmentNeedsPosition() const
   {
     return this->KeepPosition || this->DerivativeNormals ||
-      (this->Shading != Mode::Gouraud && this->NeedsPosition());
+      (this->Shading != Mode::Gouraud && !this->EyeFromFragCoord && this->NeedsPosition());
   }
   bool operator==(const Configuration& o) const;
   bool operator!=(const Configuration& o) const { return !(*this == o); }
@@ -144,7 +151,11 @@ struct Request
   bool DerivativeNormals = false; ///< flat without cell normals
   bool KeepPosition = false;      ///< code that is not ours may read the position
   bool BlockColours = false;      ///< composite data: per-block colours replace the material's
-  bool Specialize = true;         ///< off: a general shader
+  /// Triangles small next to the viewport (vertex-bound): a perspective eye vector is cheaper
+  /// from gl_FragCoord than interpolated (llvmpipe: interpolation costs per triangle, the
+  /// reconstruction per fragment).
+  bool SmallTriangles = false;
+  bool Specialize = true; ///< off: a general shader
 };
 
 /// The configuration for a scene and a material (`back` is the actor's back-face property or

@@ -403,8 +403,34 @@ TEST_F(PhongMapper, ShadersHoldExactlyTheScenesLightsAndKinds)
   EXPECT_EQ(single.find("phongAttenuation"), std::string::npos);
   EXPECT_EQ(single.find("phongSpotlight"), std::string::npos);
   EXPECT_EQ(single.find("light 1"), std::string::npos);
-  // The specular eye vector varies under perspective: the position is interpolated.
-  EXPECT_NE(single.find("vertexVC"), std::string::npos);
+  // The specular eye vector varies under perspective: on large triangles (fragment-bound) it is
+  // interpolated from the position...
+  EXPECT_NE(single.find("vec3 v = normalize(-vertexVC.xyz)"), std::string::npos) << single;
+  // ...on triangles of a few pixels (vertex-bound: 65,024 triangles in 200 x 200 pixels) it is
+  // the reversed ray through the pixel, with directional lights only: no interpolated position.
+  PhongScene fine(SphereMesh(256, 128), OneWhiteLight(), WarmMaterial(), Perspective(), VTK_PHONG);
+  fine.Render();
+  const std::string small = fine.Mapper->GetFragmentShaderSource();
+  EXPECT_NE(small.find("gl_FragCoord"), std::string::npos) << small;
+  EXPECT_EQ(small.find("vertexVC"), std::string::npos) << small;
+  EXPECT_EQ(fine.Mapper->GetVertexShaderSource().find("vertexVCVSOutput"), std::string::npos);
+}
+
+// The eye vector from gl_FragCoord follows the renderer's viewport: a renderer in the right half
+// of a window, a perspective camera, a specular highlight, against the exact sphere.
+TEST_F(PhongMapper, EyeVectorFollowsTheViewport)
+{
+  const SceneSpec scene = OneWhiteLight();
+  PhongScene phong(SphereMesh(256, 128), scene, WarmMaterial(), Perspective(), VTK_PHONG);
+  phong.Renderer->SetViewport(0.5, 0.0, 1.0, 1.0);
+  phong.Window->SetSize(2 * Size, Size);
+  const Image image = phong.Render();
+  ASSERT_NE(phong.Mapper->GetFragmentShaderSource().find("gl_FragCoord"), std::string::npos);
+  const Reference sphere =
+    AnalyticSphere(scene, WarmMaterial(), Perspective(), { 0, 0, 0 }, 0.5, Size, Size);
+  ExpectAgreement(
+    image, [&](int px, int py, Vec& colour) { return px >= Size && sphere(px - Size, py, colour); },
+    1.0, 3.0, "right half of the window");
 }
 
 TEST_F(PhongMapper, GouraudEvaluatesInTheVertexShaderOnly)
