@@ -598,8 +598,9 @@ Configuration Configure(
     config.Ambient = true;
     config.KeepPosition = true;
   }
-  config.EyeFromFragCoord = request.SmallTriangles && scene.EyeRayValid && !scene.Parallel &&
-    config.Shading != Mode::Gouraud && config.AnySpecular() && !config.AnyPositional() &&
+  // EyeRayValid implies perspective.
+  config.EyeFromFragCoord = request.SmallTriangles && scene.EyeRayValid &&
+    config.Shading != Mode::Gouraud && config.NeedsEyeVector() && !config.AnyPositional() &&
     !config.KeepPosition && !config.DerivativeNormals;
   return config;
 }

@@ -76,32 +76,12 @@ bool vtkPhongPolyDataMapper::ApplyPreset(vtkProperty* property, const char* name
 }
 
 //------------------------------------------------------------------------------
-void vtkPhongPolyDataMapper::SetSceneAmbient(bool value)
+phongvtk::MapperState& vtkPhongPolyDataMapper::PhongState()
 {
-  if (this->Internals->State.SceneAmbient != value)
-  {
-    this->Internals->State.SceneAmbient = value;
-    this->Modified();
-  }
-}
-
-bool vtkPhongPolyDataMapper::GetSceneAmbient()
-{
-  return this->Internals->State.SceneAmbient;
-}
-
-void vtkPhongPolyDataMapper::SetSpecializeShaders(bool value)
-{
-  if (this->Internals->State.SpecializeShaders != value)
-  {
-    this->Internals->State.SpecializeShaders = value;
-    this->Modified();
-  }
-}
-
-bool vtkPhongPolyDataMapper::GetSpecializeShaders()
-{
-  return this->Internals->State.SpecializeShaders;
+  phongvtk::MapperState& state = this->Internals->State;
+  state.SceneAmbient = this->SceneAmbient;
+  state.SpecializeShaders = this->SpecializeShaders;
+  return state;
 }
 
 int vtkPhongPolyDataMapper::GetShaderRebuilds()
@@ -126,15 +106,14 @@ std::string vtkPhongPolyDataMapper::GetShaderConfiguration()
 }
 
 //------------------------------------------------------------------------------
-PHONGVTK_MAPPER_CORE_FORWARDS(vtkPhongPolyDataMapper, this->Internals->State)
+PHONGVTK_MAPPER_CORE_FORWARDS(vtkPhongPolyDataMapper, this->PhongState())
 
 //------------------------------------------------------------------------------
 void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  const phongvtk::MapperState& state = this->Internals->State;
-  os << indent << "SceneAmbient: " << (state.SceneAmbient ? "On" : "Off") << "\n";
-  os << indent << "SpecializeShaders: " << (state.SpecializeShaders ? "On" : "Off") << "\n";
-  os << indent << "ShaderRebuilds: " << state.ShaderRebuilds << "\n";
+  os << indent << "SceneAmbient: " << (this->SceneAmbient ? "On" : "Off") << "\n";
+  os << indent << "SpecializeShaders: " << (this->SpecializeShaders ? "On" : "Off") << "\n";
+  os << indent << "ShaderRebuilds: " << this->Internals->State.ShaderRebuilds << "\n";
   os << indent << "ShaderConfiguration: " << this->GetShaderConfiguration() << "\n";
 }

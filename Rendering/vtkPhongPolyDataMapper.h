@@ -50,6 +50,7 @@ namespace phongvtk
 {
 template <class M>
 struct MapperCore;
+struct MapperState;
 }
 
 class VTKPHONGVTKRENDERING_EXPORT vtkPhongPolyDataMapper : public vtkOpenGLPolyDataMapper
@@ -64,8 +65,8 @@ public:
    * Derive the ambient light from the scene: Ia = (Σ_j Id_j)∘(mean kd over the renderer's
    * visible actors), replacing the renderer's and the lights' ambient colours. Default: off.
    */
-  virtual void SetSceneAmbient(bool);
-  virtual bool GetSceneAmbient();
+  vtkSetMacro(SceneAmbient, bool);
+  vtkGetMacro(SceneAmbient, bool);
   vtkBooleanMacro(SceneAmbient, bool);
   ///@}
 
@@ -75,8 +76,8 @@ public:
    * term of every light is evaluated and the position interpolated (a general shader, for
    * measuring what specialisation saves; the image is the same). Default: on.
    */
-  virtual void SetSpecializeShaders(bool);
-  virtual bool GetSpecializeShaders();
+  vtkSetMacro(SpecializeShaders, bool);
+  vtkGetMacro(SpecializeShaders, bool);
   vtkBooleanMacro(SpecializeShaders, bool);
   ///@}
 
@@ -138,12 +139,17 @@ protected:
   void SetLightingShaderParameters(
     vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
+  bool SceneAmbient = false;
+  bool SpecializeShaders = true;
+
 private:
   vtkPhongPolyDataMapper(const vtkPhongPolyDataMapper&) = delete;
   void operator=(const vtkPhongPolyDataMapper&) = delete;
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
+  // The shared overrides' state, with this mapper's options.
+  phongvtk::MapperState& PhongState();
   template <class M>
   friend struct phongvtk::MapperCore;
 };
