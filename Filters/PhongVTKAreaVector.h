@@ -278,6 +278,43 @@ inline bool NormalizeDouble(const double w[3], double n[3], double& length, int&
 }
 
 /**
+ * |v| of a double-double vector whose largest component lies in [2^-500, 2^500], in
+ * double-double (relative error ~2^-100); `inverse` receives 1 / norm.Hi rounded.
+ */
+PHONGVTK_INLINE DD NormInWindow(const DD v[3], double& inverse)
+{
+  // |v|^2 in double-double: the three leading squares are summed exactly (TwoSum); the error
+  // terms (square errors, cross terms 2 hi lo, sum errors) are O(u |v|^2) and summed in double.
+  double p[3], e[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    TwoProduct(v[c].Hi, v[c].Hi, p[c], e[c]);
+    e[c] += 2.0 * v[c].Hi * v[c].Lo;
+  }
+  double s1, t1, s2, t2;
+  TwoSum(p[0], p[1], s1, t1);
+  TwoSum(s1, p[2], s2, t2);
+  DD s;
+  FastTwoSum(s2, (t1 + t2) + (e[0] + e[1] + e[2]), s.Hi, s.Lo);
+  // sqrt in double-double: one Newton correction of the double square root.
+  const double r = std::sqrt(s.Hi);
+  inverse = 1.0 / r;
+  const double residual = Fma(-r, r, s.Hi) + s.Lo;
+  DD norm;
+  FastTwoSum(r, 0.5 * residual * inverse, norm.Hi, norm.Lo);
+  return norm;
+}
+
+/// (a.Hi + a.Lo) / (b.Hi + b.Lo) rounded to double, relative error ~2^-100 before the final
+/// rounding; `inverse` is 1 / b.Hi rounded.
+PHONGVTK_INLINE double DivideDD(DD a, DD b, double inverse)
+{
+  const double q1 = a.Hi * inverse;
+  const double rem = Fma(-q1, b.Hi, a.Hi) + (a.Lo - q1 * b.Lo);
+  return q1 + rem * inverse;
+}
+
+/**
  * Faithful unit vector of a double-double vector: each returned component is within 1 ulp of the
  * exact w_c/|w| when every component of w carries a relative error below 2^-56. The norm,
  * square root and quotients are evaluated in double-double (error ~2^-100), so the only
@@ -301,33 +338,14 @@ inline bool NormalizeFaithful(const DD w[3], double n[3], double& length, int& e
   {
     v[c] = k == 0 ? w[c] : DD{ Scale2(w[c].Hi, -k), Scale2(w[c].Lo, -k) };
   }
-  // |v|^2 in double-double: the three leading squares are summed exactly (TwoSum); the error
-  // terms (square errors, cross terms 2 hi lo, sum errors) are O(u |v|^2) and summed in double.
-  double p[3], e[3];
+  // One reciprocal serves every quotient: q1 = v.Hi / norm is only a first approximation, the
+  // remainder v - q1 * norm is evaluated (nearly) exactly, so the correction rem / norm needs
+  // only a few correct bits and the reciprocal's rounding error vanishes at second order.
+  double inverse;
+  const DD norm = NormInWindow(v, inverse);
   for (int c = 0; c < 3; ++c)
   {
-    TwoProduct(v[c].Hi, v[c].Hi, p[c], e[c]);
-    e[c] += 2.0 * v[c].Hi * v[c].Lo;
-  }
-  double s1, t1, s2, t2;
-  TwoSum(p[0], p[1], s1, t1);
-  TwoSum(s1, p[2], s2, t2);
-  DD s;
-  FastTwoSum(s2, (t1 + t2) + (e[0] + e[1] + e[2]), s.Hi, s.Lo);
-  // sqrt in double-double: one Newton correction of the double square root. One reciprocal
-  // serves every quotient: q1 = v.Hi / norm is only a first approximation, the remainder
-  // v - q1 * norm is evaluated (nearly) exactly, so the correction rem / norm needs only a few
-  // correct bits and the reciprocal's rounding error vanishes at second order.
-  const double r = std::sqrt(s.Hi);
-  const double inverse = 1.0 / r;
-  const double residual = Fma(-r, r, s.Hi) + s.Lo;
-  DD norm;
-  FastTwoSum(r, 0.5 * residual * inverse, norm.Hi, norm.Lo);
-  for (int c = 0; c < 3; ++c)
-  {
-    const double q1 = v[c].Hi * inverse;
-    const double rem = Fma(-q1, norm.Hi, v[c].Hi) + (v[c].Lo - q1 * norm.Lo);
-    n[c] = q1 + rem * inverse;
+    n[c] = DivideDD(v[c], norm, inverse);
   }
   length = norm.Hi;
   exponent = k;
@@ -658,6 +676,20 @@ struct CompensatedArith
   }
 
   /**
+   * Bound on |(hi + lo) - w_c| per component, where hi + lo = TwoSum(S, Err) and w is the exact
+   * area vector of the n-gon (TrackBound only): the neglected second-order products, the rounding
+   * of the error accumulator, and an absolute slack for error terms lost to underflow (at most
+   * 2^-1074 per operation).
+   */
+  PHONGVTK_INLINE V4 Bound(std::int64_t n) const
+  {
+    const double triangles = static_cast<double>(n - 1); // fan triangles + 1
+    const double underflow = 32.0 * triangles * 0x1p-1074;
+    return 64.0 * 0x1p-106 * this->Permanent + (1.01 * triangles * 0x1p-53) * this->ErrMagnitude +
+      0x1p-53 * Abs(this->Err) + underflow;
+  }
+
+  /**
    * EXACT filter: true when every component is certified to carry a relative error below 2^-56
    * (or is certified exactly zero), so that NormalizeFaithful returns a faithful normal.
    * `hasTinyDifference()` is asked only when a component's products were all zero: a product
@@ -668,13 +700,9 @@ struct CompensatedArith
   PHONGVTK_INLINE bool FinishCertified(
     AreaVector& out, std::int64_t n, const TinyFn& hasTinyDifference) const
   {
-    const double triangles = static_cast<double>(n - 1); // fan triangles + 1
-    // Absolute slack for error terms lost to underflow (at most 2^-1074 per operation).
-    const double underflow = 32.0 * triangles * 0x1p-1074;
     V4 hi, lo;
     TwoSum(this->S, this->Err, hi, lo);
-    const V4 bound = 64.0 * 0x1p-106 * this->Permanent +
-      (1.01 * triangles * 0x1p-53) * this->ErrMagnitude + 0x1p-53 * Abs(this->Err) + underflow;
+    const V4 bound = this->Bound(n);
     // Per component: no overflow risk and no non-finite input (NaN fails every comparison), and
     // either every product was exactly zero (Permanent == 0) or the bound certifies 2^-56.
     const V4 limit = { 0x1p900, 0x1p900, 0x1p900, 0x1p900 };

@@ -1,4 +1,5 @@
-// Exact fallback of the EXACT accuracy mode: the area vector in GMP integer arithmetic.
+// Exact fallbacks of the EXACT accuracy mode: the area vector and the visible area in GMP
+// integer arithmetic.
 //
 // Every finite double is m * 2^e with an integer m of at most 53 bits. Scaling the whole polygon
 // by 2^-emin (emin the smallest such e) turns every coordinate into an integer, so differences,
@@ -6,11 +7,14 @@
 // polygons the double-double filter cannot certify come here (exact cancellation, coordinates
 // outside the safe exponent window), so clarity wins over speed.
 #include "PhongVTKAreaVector.h"
+#include "PhongVTKVisibleArea.h"
 
 #include <gmp.h>
 
 #include <array>
 #include <climits>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace phongvtk
@@ -80,27 +84,27 @@ DD ToScaledDD(mpz_srcptr z, long shift)
   FastTwoSum(hi, lo, s, t);
   return { s, t };
 }
-} // namespace
-
-void ExactAreaVector(const double* xyz, std::int64_t n, AreaVector& out)
+/// floor(log2) of the lowest bit of the non-zero values among x[0 .. count): every one of them is
+/// an integer times 2^emin. INT_MAX when all are zero.
+int LowestExponent(const double* x, std::int64_t count, int emin = INT_MAX)
 {
-  int emin = INT_MAX;
-  for (std::int64_t k = 0; k < 3 * n; ++k)
+  for (std::int64_t k = 0; k < count; ++k)
   {
-    if (xyz[k] != 0.0)
+    if (x[k] != 0.0)
     {
       int e;
-      std::frexp(xyz[k], &e);
+      std::frexp(x[k], &e);
       emin = std::min(emin, e - 53);
     }
   }
-  if (emin == INT_MAX)
-  {
-    out.SetZero(StatusDegenerate); // every coordinate is zero
-    return;
-  }
+  return emin;
+}
 
-  std::array<Integer, 3> p0, prev, next, w;
+/// W = the exact area vector of the polygon in units of 2^(2 emin) (coordinates scaled to
+/// integers by 2^-emin).
+void ExactIntegerAreaVector(const double* xyz, std::int64_t n, int emin, std::array<Integer, 3>& w)
+{
+  std::array<Integer, 3> p0, prev, next;
   for (int c = 0; c < 3; ++c)
   {
     SetScaled(p0[c].get(), xyz[c], emin);
@@ -129,15 +133,35 @@ void ExactAreaVector(const double* xyz, std::int64_t n, AreaVector& out)
       mpz_swap(prev[c].get(), next[c].get());
     }
   }
+}
 
+/// Number of bits of the largest of the integers (0 when all are zero).
+long MaxBits(const std::array<Integer, 3>& v)
+{
   long bits = 0;
   for (int c = 0; c < 3; ++c)
   {
-    if (mpz_sgn(w[c].get()) != 0)
+    if (mpz_sgn(v[c].get()) != 0)
     {
-      bits = std::max(bits, static_cast<long>(mpz_sizeinbase(w[c].get(), 2)));
+      bits = std::max(bits, static_cast<long>(mpz_sizeinbase(v[c].get(), 2)));
     }
   }
+  return bits;
+}
+} // namespace
+
+void ExactAreaVector(const double* xyz, std::int64_t n, AreaVector& out)
+{
+  const int emin = LowestExponent(xyz, 3 * n);
+  if (emin == INT_MAX)
+  {
+    out.SetZero(StatusDegenerate); // every coordinate is zero
+    return;
+  }
+  std::array<Integer, 3> w;
+  ExactIntegerAreaVector(xyz, n, emin, w);
+
+  const long bits = MaxBits(w);
   if (bits == 0)
   {
     out.SetZero(StatusDegenerate); // the exact area vector is zero
@@ -164,6 +188,72 @@ void ExactAreaVector(const double* xyz, std::int64_t n, AreaVector& out)
   out.Length = len;
   out.Exponent = static_cast<int>(shift) + k + 2 * emin;
   out.Status = StatusOk;
+}
+
+VisibleAreaResult ExactVisibleArea(
+  const double* xyz, std::int64_t n, const double vector[3], bool eye)
+{
+  for (std::int64_t k = 0; k < 3 * n; ++k)
+  {
+    if (!std::isfinite(xyz[k]))
+    {
+      return { 0.0, StatusNonFinite };
+    }
+  }
+  const int emin = LowestExponent(vector, 3, LowestExponent(xyz, 3 * n));
+  if (n < 3 || emin == INT_MAX)
+  {
+    return { 0.0, StatusDegenerate };
+  }
+  std::array<Integer, 3> w;
+  ExactIntegerAreaVector(xyz, n, emin, w);
+  if (MaxBits(w) == 0)
+  {
+    return { 0.0, StatusDegenerate };
+  }
+  // S: the view vector in units of 2^emin; with an eye point, sum_i (eye - p_i) = n (eye - mean).
+  std::array<Integer, 3> s;
+  Integer t;
+  for (int c = 0; c < 3; ++c)
+  {
+    SetScaled(t.get(), vector[c], emin);
+    if (!eye)
+    {
+      mpz_set(s[c].get(), t.get());
+      continue;
+    }
+    mpz_mul_si(s[c].get(), t.get(), static_cast<long>(n));
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      SetScaled(t.get(), xyz[3 * i + c], emin);
+      mpz_sub(s[c].get(), s[c].get(), t.get());
+    }
+  }
+  // D = S . W in units of 2^(3 emin): the visible area is D / (2 |S|) in units of 2^(2 emin).
+  Integer d;
+  for (int c = 0; c < 3; ++c)
+  {
+    mpz_addmul(d.get(), s[c].get(), w[c].get());
+  }
+  if (mpz_sgn(d.get()) == 0)
+  {
+    return { 0.0, StatusOk }; // seen exactly edge-on (or from a point of its own plane)
+  }
+  // Both brought near 1 before the double-double division.
+  const long shiftS = MaxBits(s) - 1;
+  const long shiftD = static_cast<long>(mpz_sizeinbase(d.get(), 2)) - 1;
+  DD sv[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    sv[c] = ToScaledDD(s[c].get(), shiftS);
+  }
+  double inverse;
+  const DD norm = NormInWindow(sv, inverse);
+  const double q = DivideDD(ToScaledDD(d.get(), shiftD), norm, inverse);
+  const long exponent = shiftD - shiftS + 2L * emin - 1;
+  const double area = std::ldexp(q, static_cast<int>(std::max(-4000L, std::min(4000L, exponent))));
+  constexpr double top = std::numeric_limits<double>::max();
+  return { std::max(-top, std::min(top, area)), StatusOk };
 }
 
 } // namespace detail

@@ -1,6 +1,7 @@
 #include "vtkPolygonNormals.h"
 
 #include "PhongVTKAreaVector.h"
+#include "PhongVTKCells.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -32,6 +33,8 @@ namespace
 {
 using phongvtk::Accuracy;
 using phongvtk::AreaVector;
+using phongvtk::RawCells;
+using phongvtk::ValidIds;
 
 /// Per-thread bookkeeping of a pass over the cells.
 struct CellCounts
@@ -86,20 +89,6 @@ inline void WriteCell(const CellOutputs<O>& out, vtkIdType cell, const AreaVecto
   {
     out.Status[cell] = r.Status;
   }
-}
-
-/// Whether the n point ids all lie in [0, numberOfPoints) (a negative id wraps to a huge one).
-template <class Connectivity>
-inline bool ValidIds(const Connectivity* ids, std::int64_t n, vtkIdType numberOfPoints)
-{
-  using UnsignedId = std::make_unsigned_t<Connectivity>;
-  const auto limit = static_cast<UnsignedId>(numberOfPoints);
-  bool valid = true;
-  for (std::int64_t k = 0; k < n; ++k)
-  {
-    valid &= static_cast<UnsignedId>(ids[k]) < limit;
-  }
-  return valid;
 }
 
 /// Pointers to the coordinates of the corners of triangles `cell` ... `cell + 3`.
@@ -482,16 +471,6 @@ struct IdSpan
 {
   vtkIdType First;
   vtkIdType Last;
-};
-
-/// Visits the storage of a vtkCellArray with typed offsets and connectivity pointers.
-struct RawCells
-{
-  template <class CellStateT, class Fn>
-  void operator()(CellStateT& state, Fn&& fn) const
-  {
-    fn(state.GetOffsets()->GetPointer(0), state.GetConnectivity()->GetPointer(0));
-  }
 };
 
 /**

@@ -3,6 +3,7 @@
 // evaluations of the weighting formulas written here from their definitions, or from analytic
 // facts; never from the filter's own output.
 #include "PhongVTKExactReference.h"
+#include "PhongVTKFilterTestSupport.h"
 #include "PhongVTKOFFReader.h"
 #include "vtkPolygonNormals.h"
 
@@ -46,9 +47,15 @@
 
 namespace
 {
+using phongvtk_test::Cell;
+using phongvtk_test::Cells;
 using phongvtk_test::ExactAreaVector;
+using phongvtk_test::MakeCellArray;
+using phongvtk_test::MakePolyData;
+using phongvtk_test::MessageObserver;
 using phongvtk_test::Point;
-using Cell = std::vector<vtkIdType>;
+using phongvtk_test::PointsOf;
+using phongvtk_test::Transformed;
 using Vec3L = std::array<long double, 3>;
 
 constexpr int Modes[] = { vtkPolygonNormals::FAST, vtkPolygonNormals::DOUBLE,
@@ -70,87 +77,6 @@ const char* WeightingName(int weighting)
 
 //------------------------------------------------------------------------------
 // Building inputs.
-
-struct Cells
-{
-  std::vector<Cell> Verts, Lines, Polys, Strips;
-};
-
-vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<Cell>& cells)
-{
-  auto array = vtkSmartPointer<vtkCellArray>::New();
-  for (const Cell& cell : cells)
-  {
-    array->InsertNextCell(static_cast<vtkIdType>(cell.size()), cell.data());
-  }
-  return array;
-}
-
-/// Poly data from points (stored as float or double) and cells. The cell arrays are set in the
-/// reverse of VTK's cell order, which must not matter.
-vtkSmartPointer<vtkPolyData> MakePolyData(
-  const std::vector<Point>& points, const Cells& cells, int pointType = VTK_DOUBLE)
-{
-  vtkNew<vtkPoints> pts;
-  pts->SetDataType(pointType);
-  pts->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    pts->SetPoint(static_cast<vtkIdType>(i), points[i].data());
-  }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(pts);
-  if (!cells.Strips.empty())
-  {
-    mesh->SetStrips(MakeCellArray(cells.Strips));
-  }
-  if (!cells.Polys.empty())
-  {
-    mesh->SetPolys(MakeCellArray(cells.Polys));
-  }
-  if (!cells.Lines.empty())
-  {
-    mesh->SetLines(MakeCellArray(cells.Lines));
-  }
-  if (!cells.Verts.empty())
-  {
-    mesh->SetVerts(MakeCellArray(cells.Verts));
-  }
-  return mesh;
-}
-
-std::vector<Point> PointsOf(vtkPolyData* mesh)
-{
-  std::vector<Point> points(static_cast<std::size_t>(mesh->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    mesh->GetPoint(i, points[static_cast<std::size_t>(i)].data());
-  }
-  return points;
-}
-
-/// A copy of `mesh` with points p * scale + offset (computed in double, stored as pointType).
-vtkSmartPointer<vtkPolyData> Transformed(
-  vtkPolyData* mesh, double scale, double offset, int pointType = VTK_DOUBLE)
-{
-  vtkNew<vtkPoints> pts;
-  pts->SetDataType(pointType);
-  pts->SetNumberOfPoints(mesh->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    mesh->GetPoint(i, p);
-    for (double& x : p)
-    {
-      x = x * scale + offset;
-    }
-    pts->SetPoint(i, p);
-  }
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->CopyStructure(mesh);
-  out->SetPoints(pts);
-  return out;
-}
 
 /// A UV sphere (vtkSphereSource, double points) with every point moved by a deterministic
 /// random amount of relative size `jitter`: irregular but smooth triangles.
@@ -226,25 +152,6 @@ vtkSmartPointer<vtkPolyData> IntegerHeightField()
 
 //------------------------------------------------------------------------------
 // Running the filter and reading its output.
-
-/// Receives the error and warning events of a filter (what vtkTest::ErrorObserver does).
-class MessageObserver : public vtkCommand
-{
-public:
-  static MessageObserver* New() { return new MessageObserver; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    const std::string text = data ? static_cast<const char*>(data) : "";
-    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings).push_back(text);
-  }
-  void Watch(vtkObject* object)
-  {
-    object->AddObserver(vtkCommand::ErrorEvent, this);
-    object->AddObserver(vtkCommand::WarningEvent, this);
-  }
-  std::vector<std::string> Errors;
-  std::vector<std::string> Warnings;
-};
 
 /// Runs the filter on `input`; warnings are swallowed (tests that expect them watch them
 /// themselves), errors fail the test.

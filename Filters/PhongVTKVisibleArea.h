@@ -1,0 +1,377 @@
+/**
+ * @file PhongVTKVisibleArea.h
+ * @brief Private kernels of vtkVisibleArea: the area a viewer sees of one polygon, v.w / 2 with
+ * w the polygon's area vector and v the unit vector toward the viewer, in the accuracy modes of
+ * PhongVTKAreaVector.h.
+ *
+ * The view is either a direction V (the same for every polygon) or an eye point E; then the
+ * direction of a polygon is from the mean of its vertices to the eye, and the kernels use the
+ * exactly equivalent S = sum_i (E - p_i) = n (E - mean): the visible area is S.w / (2 |S|).
+ *
+ * - FAST: the area vector in FAST, the dot product in float.
+ * - DOUBLE: the area vector in DOUBLE, the dot product in double.
+ * - COMPENSATED: the area vector in COMPENSATED, S as a compensated sum, the dot product by
+ *   Ogita-Rump-Oishi's Dot2 (TwoProduct, TwoSum): as accurate as if computed in twice the
+ *   working precision, then rounded.
+ * - EXACT: faithful (within 1 ulp) of the exact S.w / (2 |S|) for the polygon's double
+ *   coordinates and the given V or E. A double-double evaluation whose error bound is carried
+ *   along (the area vector's bound from CompensatedArith, S's, the dot's) decides almost every
+ *   polygon; exact GMP integers decide the rest (seen nearly edge-on, coordinates outside the
+ *   safe exponent window). A polygon seen exactly edge-on gets exactly zero.
+ */
+#ifndef PhongVTKVisibleArea_h
+#define PhongVTKVisibleArea_h
+
+#include "PhongVTKAreaVector.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace phongvtk
+{
+
+/// What the polygons are seen from.
+struct View
+{
+  /// True: Vector is the eye point; false: Vector is the direction toward the viewer, scaled by
+  /// a power of two so that its largest component lies in [1, 2) (the ratio v.w / |v| does not
+  /// change).
+  bool Eye = false;
+  double Vector[3] = { 0.0, 0.0, 1.0 };
+  /// 1 / |Vector| rounded (direction only).
+  double InverseLength = 1.0;
+};
+
+/// Visible area (v.w / 2) and the status of the area vector (NormalStatus values).
+struct VisibleAreaResult
+{
+  double Area;
+  std::uint8_t Status;
+};
+
+namespace detail
+{
+/// Exact fallback of the EXACT mode in GMP integers (PhongVTKExactAreaVector.cxx).
+VisibleAreaResult ExactVisibleArea(
+  const double* xyz, std::int64_t n, const double vector[3], bool eye);
+
+/// a * 2^k as a double, magnitudes beyond double's range saturated at its largest value.
+inline double ScaleSaturated(double a, int k)
+{
+  constexpr double top = std::numeric_limits<double>::max();
+  return std::max(-top, std::min(top, Scale2(a, k)));
+}
+
+/// Scales v[0..3) by the power of two that brings its largest component into [1, 2); false when
+/// v is zero or not finite.
+inline bool ScaleToUnitRange(double v[3])
+{
+  const double m = MaxAbs3(v);
+  if (!(m > 0.0 && m <= std::numeric_limits<double>::max()))
+  {
+    return false;
+  }
+  const int k = Exponent2(m);
+  for (int c = 0; c < 3; ++c)
+  {
+    v[c] = Scale2(v[c], -k);
+  }
+  return true;
+}
+
+/**
+ * S = sum_i (E - p_i) (toward the eye from the vertex mean, times n), scaled into [1, 2) by a
+ * power of two; a compensated sum for COMPENSATED, a plain double sum otherwise. False when S is
+ * zero (the eye is the vertex mean) or not finite.
+ */
+template <Accuracy A, class T, class VertexFn>
+bool EyeVector(const VertexFn& vertex, std::int64_t n, const double eye[3], double s[3])
+{
+  for (double pre : { 1.0, 0x1p-4 })
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      double sum = 0.0, err = 0.0;
+      for (std::int64_t i = 0; i < n; ++i)
+      {
+        const double d = eye[c] * pre - static_cast<double>(vertex(i)[c]) * pre;
+        if constexpr (A == Accuracy::Compensated)
+        {
+          double t, e;
+          TwoSum(sum, d, t, e);
+          sum = t;
+          err += e;
+        }
+        else
+        {
+          sum += d;
+        }
+      }
+      s[c] = sum + err;
+    }
+    if (ScaleToUnitRange(s))
+    {
+      return true;
+    }
+    if (MaxAbs3(s) == 0.0)
+    {
+      return false;
+    }
+    // Overflowed: once more on coordinates scaled down (finite ones: the area vector is ok).
+  }
+  return false;
+}
+
+/// v.w in the arithmetic of mode A (FAST: float; DOUBLE: double; COMPENSATED: Dot2).
+template <Accuracy A>
+PHONGVTK_INLINE double Dot(const double v[3], const double w[3])
+{
+  if constexpr (A == Accuracy::Fast)
+  {
+    float d = 0.0f;
+    for (int c = 0; c < 3; ++c)
+    {
+      d += static_cast<float>(v[c]) * static_cast<float>(w[c]);
+    }
+    return d;
+  }
+  else if constexpr (A == Accuracy::Double)
+  {
+    return v[0] * w[0] + v[1] * w[1] + v[2] * w[2];
+  }
+  else
+  {
+    double s = 0.0, err = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      double p, e, t, f;
+      TwoProduct(v[c], w[c], p, e);
+      TwoSum(s, p, t, f);
+      s = t;
+      err += e + f;
+    }
+    return s + err;
+  }
+}
+
+/**
+ * EXACT, certified double-double stage: v.w / (2 |v|) from a double-double v with absolute error
+ * bounds vErr and a double-double w with bounds wErr (wZero: certified exactly zero). False when
+ * the bound does not certify a faithful result.
+ */
+inline bool CertifiedVisibleArea(const DD v[3], const double vErr[3], const DD w[3],
+  const double wErr[3], const bool wZero[3], double& area)
+{
+  bool exactZero = true;
+  for (int c = 0; c < 3; ++c)
+  {
+    exactZero = exactZero && (wZero[c] || (v[c].Hi == 0.0 && v[c].Lo == 0.0 && vErr[c] == 0.0));
+  }
+  if (exactZero)
+  {
+    area = 0.0; // every product is exactly zero: seen exactly edge-on
+    return true;
+  }
+  // D = v.w: the leading products exactly (TwoProduct) in a double-double sum, the cross terms
+  // (first order) in double; bound = propagated input errors + the sum's rounding.
+  DD d = { 0.0, 0.0 };
+  double cross = 0.0, magnitude = 0.0, err = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    if (wZero[c])
+    {
+      continue;
+    }
+    double p, e;
+    TwoProduct(v[c].Hi, w[c].Hi, p, e);
+    d = Add(d, DD{ p, e });
+    cross += v[c].Hi * w[c].Lo + v[c].Lo * w[c].Hi;
+    const double av = std::fabs(v[c].Hi) + std::fabs(v[c].Lo);
+    const double aw = std::fabs(w[c].Hi) + std::fabs(w[c].Lo);
+    magnitude += av * aw;
+    err += av * wErr[c] + aw * vErr[c] + vErr[c] * wErr[c];
+  }
+  d = Add(d, DD{ cross, 0.0 });
+  err = 1.01 * (err + 0x1p-100 * magnitude) + 0x1p-1060;
+  if (!(err <= 0x1p-56 * std::fabs(d.Hi)))
+  {
+    return false;
+  }
+  double inverse;
+  const DD norm = NormInWindow(v, inverse);
+  if (!(1.01 * (vErr[0] + vErr[1] + vErr[2]) <= 0x1p-58 * norm.Hi))
+  {
+    return false;
+  }
+  area = 0.5 * DivideDD(d, norm, inverse);
+  return true;
+}
+
+/// EXACT: S = sum_i (E - p_i) as double-double with error bounds, scaled into [1, 2) by a power
+/// of two. False when S cannot be bounded (overflow) or is zero.
+template <class T, class VertexFn>
+bool EyeVectorDD(
+  const VertexFn& vertex, std::int64_t n, const double eye[3], DD s[3], double sErr[3])
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    DD sum = { 0.0, 0.0 };
+    double magnitude = 0.0;
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      DD d;
+      TwoSum(eye[c], -static_cast<double>(vertex(i)[c]), d.Hi, d.Lo); // exact
+      sum = Add(sum, d);
+      magnitude += std::fabs(d.Hi);
+    }
+    if (!(magnitude <= 0x1p900))
+    {
+      return false;
+    }
+    s[c] = sum;
+    sErr[c] = 1.01 * static_cast<double>(n) * (0x1p-100 * magnitude + 0x1p-1070);
+  }
+  double hi[3] = { s[0].Hi, s[1].Hi, s[2].Hi };
+  const double m = MaxAbs3(hi);
+  if (!(m > 0x1p-900))
+  {
+    return false;
+  }
+  const int k = Exponent2(m);
+  for (int c = 0; c < 3; ++c)
+  {
+    s[c] = { Scale2(s[c].Hi, -k), Scale2(s[c].Lo, -k) };
+    sErr[c] = Scale2(sErr[c], -k);
+  }
+  return true;
+}
+
+/// EXACT: the certified stage, then the GMP fallback.
+template <class T, class VertexFn>
+VisibleAreaResult ExactVisibleAreaOf(const VertexFn& vertex, std::int64_t n, const View& view)
+{
+  if (n < 3)
+  {
+    return { 0.0, StatusDegenerate };
+  }
+  const Scaling identity;
+  CompensatedArith<T, true> acc;
+  AccumulateFan<false>(acc, vertex, n, identity);
+  V4 hi, lo;
+  TwoSum(acc.S, acc.Err, hi, lo);
+  const V4 bound = acc.Bound(n);
+  DD w[3];
+  double wErr[3];
+  bool wZero[3];
+  bool ok = true, anyZero = false, allZero = true;
+  for (int c = 0; c < 3; ++c)
+  {
+    ok = ok && acc.Permanent[c] <= 0x1p900; // no overflow risk, no NaN
+    w[c] = { hi[c], lo[c] };
+    wZero[c] = acc.Permanent[c] == 0.0; // every product exactly zero (unless one underflowed)
+    wErr[c] = wZero[c] ? 0.0 : bound[c];
+    anyZero = anyZero || wZero[c];
+    allZero = allZero && wZero[c];
+  }
+  // A product that underflowed to zero would pass for an exact zero.
+  ok = ok && !(anyZero && HasTinyDifference<false, T>(vertex, n, identity));
+  if (ok && allZero)
+  {
+    return { 0.0, StatusDegenerate };
+  }
+  if (ok)
+  {
+    DD v[3];
+    double vErr[3] = { 0.0, 0.0, 0.0 };
+    if (view.Eye)
+    {
+      ok = EyeVectorDD<T>(vertex, n, view.Vector, v, vErr);
+    }
+    else
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        v[c] = { view.Vector[c], 0.0 };
+      }
+    }
+    double area;
+    if (ok && CertifiedVisibleArea(v, vErr, w, wErr, wZero, area))
+    {
+      return { area, StatusOk };
+    }
+  }
+  thread_local std::vector<double> xyz;
+  xyz.resize(static_cast<std::size_t>(3 * n));
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      xyz[3 * i + c] = static_cast<double>(vertex(i)[c]);
+    }
+  }
+  return ExactVisibleArea(xyz.data(), n, view.Vector, view.Eye);
+}
+} // namespace detail
+
+/**
+ * Visible area of one polygon from a known area vector w * 2^exponent (FAST, DOUBLE and
+ * COMPENSATED; the vertices are read only for an eye point).
+ */
+template <Accuracy A, class T, class VertexFn>
+double VisibleAreaOfVector(
+  const VertexFn& vertex, std::int64_t n, const View& view, const double w[3], int exponent)
+{
+  double dot, inverseLength;
+  if (view.Eye)
+  {
+    double s[3];
+    if (!detail::EyeVector<A, T>(vertex, n, view.Vector, s))
+    {
+      return 0.0; // the eye is the vertex mean: no direction
+    }
+    dot = detail::Dot<A>(s, w);
+    inverseLength = 1.0 / std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+  }
+  else
+  {
+    dot = detail::Dot<A>(view.Vector, w);
+    inverseLength = view.InverseLength;
+  }
+  if constexpr (A == Accuracy::Fast)
+  {
+    return detail::ScaleSaturated(
+      static_cast<float>(dot) * static_cast<float>(inverseLength), exponent - 1);
+  }
+  return detail::ScaleSaturated(dot * inverseLength, exponent - 1);
+}
+
+/**
+ * Visible area v.w / 2 of one polygon with n vertices in accuracy mode A, and the status of its
+ * area vector (zero area for any status but StatusOk). `vertex(i)` returns a `const T*` to the
+ * coordinates of vertex i.
+ */
+template <Accuracy A, class T, class VertexFn>
+VisibleAreaResult ComputeVisibleArea(const VertexFn& vertex, std::int64_t n, const View& view)
+{
+  if constexpr (A == Accuracy::Exact)
+  {
+    return detail::ExactVisibleAreaOf<T>(vertex, n, view);
+  }
+  else
+  {
+    AreaVector w;
+    ComputeAreaVector<A, T>(vertex, n, w);
+    if (w.Status != StatusOk)
+    {
+      return { 0.0, w.Status };
+    }
+    return { VisibleAreaOfVector<A, T>(vertex, n, view, w.Vector, w.Exponent), StatusOk };
+  }
+}
+
+} // namespace phongvtk
+
+#endif
+// VTK-HeaderTest-Exclude: PhongVTKVisibleArea.h

@@ -1,0 +1,641 @@
+#include "vtkVisibleArea.h"
+
+#include "PhongVTKAreaVector.h"
+#include "PhongVTKCells.h"
+#include "PhongVTKVisibleArea.h"
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+vtkStandardNewMacro(vtkVisibleArea);
+vtkCxxSetObjectMacro(vtkVisibleArea, Camera, vtkCamera);
+
+namespace
+{
+using phongvtk::Accuracy;
+using phongvtk::RawCells;
+using phongvtk::ValidIds;
+using phongvtk::View;
+using phongvtk::VisibleAreaResult;
+using phongvtk::detail::DD;
+
+/// Per-thread bookkeeping of the pass over the cells.
+struct CellCounts
+{
+  vtkIdType NonFinite = 0;
+  vtkIdType FirstBadCell = -1; // first cell with a point id outside [0, number of points)
+
+  void BadCell(vtkIdType cell)
+  {
+    if (this->FirstBadCell < 0 || cell < this->FirstBadCell)
+    {
+      this->FirstBadCell = cell;
+    }
+  }
+};
+
+/**
+ * The pass over the polygons and strips for one accuracy mode and point type: the visible area
+ * and the status of every surface cell.
+ */
+template <Accuracy A, class T>
+struct CellPass
+{
+  vtkVisibleArea* Filter;
+  const T* Points;
+  vtkIdType NumberOfPoints;
+  View TheView;
+  const double* InputAreaVectors; // w / 2 per cell, or null: computed from the points
+  double* Areas;
+  unsigned char* Status;
+  vtkSMPThreadLocal<CellCounts>* Counts;
+
+  template <class Off, class Conn>
+  void Run(const Off* offsets, const Conn* conn, vtkIdType n, vtkIdType first, bool strips,
+    double progressBegin, double progressEnd) const
+  {
+    const vtkIdType block = std::max<vtkIdType>(65536, (n + 9) / 10);
+    for (vtkIdType begin = 0; begin < n && !this->Filter->GetAbortExecute(); begin += block)
+    {
+      const vtkIdType end = std::min(n, begin + block);
+      vtkSMPTools::For(begin, end,
+        [&](vtkIdType b, vtkIdType e)
+        {
+          CellCounts& counts = this->Counts->Local();
+          for (vtkIdType cell = b; cell < e; ++cell)
+          {
+            const Conn* ids = conn + offsets[cell];
+            const std::int64_t m = offsets[cell + 1] - offsets[cell];
+            const vtkIdType out = first + cell;
+            if (!ValidIds(ids, m, this->NumberOfPoints))
+            {
+              counts.BadCell(out);
+              continue;
+            }
+            const T* pts = this->Points;
+            VisibleAreaResult r;
+            if (strips)
+            {
+              r = this->Cell(
+                [pts, ids, m](std::int64_t i) {
+                  return pts +
+                    3 * static_cast<std::int64_t>(ids[phongvtk::StripOutlineIndex(i, m)]);
+                },
+                m, out);
+            }
+            else
+            {
+              r = this->Cell([pts, ids](std::int64_t i)
+                { return pts + 3 * static_cast<std::int64_t>(ids[i]); },
+                m, out);
+            }
+            this->Areas[out] = r.Area;
+            this->Status[out] = r.Status;
+            counts.NonFinite += (r.Status == phongvtk::StatusNonFinite);
+          }
+        });
+      this->Filter->UpdateProgress(progressBegin +
+        (progressEnd - progressBegin) * static_cast<double>(end) / static_cast<double>(n));
+    }
+  }
+
+  template <class VertexFn>
+  VisibleAreaResult Cell(const VertexFn& vertex, std::int64_t n, vtkIdType out) const
+  {
+    if (!this->InputAreaVectors)
+    {
+      return phongvtk::ComputeVisibleArea<A, T>(vertex, n, this->TheView);
+    }
+    const double* h = this->InputAreaVectors + 3 * out;
+    if (!(std::isfinite(h[0]) && std::isfinite(h[1]) && std::isfinite(h[2])))
+    {
+      return { 0.0, phongvtk::StatusNonFinite };
+    }
+    if (h[0] == 0.0 && h[1] == 0.0 && h[2] == 0.0)
+    {
+      return { 0.0, phongvtk::StatusDegenerate };
+    }
+    return { phongvtk::VisibleAreaOfVector<A, T>(vertex, n, this->TheView, h, 1),
+      phongvtk::StatusOk };
+  }
+};
+
+/**
+ * sum w over the polygons from the edges that do not cancel: a polygon's area vector is
+ * sum_i p_i x p_(i+1) over its directed edges, so every edge also used in the opposite direction
+ * cancels exactly; the rest (a closed, consistently oriented surface has none) is summed in
+ * double-double. Edges are bucketed under their smaller point id (counting sort), each bucket
+ * sorted by the other id.
+ */
+template <class T>
+class EdgeSum
+{
+public:
+  EdgeSum(const T* points, vtkIdType numberOfPoints)
+    : Points(points)
+    , Start(static_cast<std::size_t>(numberOfPoints) + 1, 0)
+  {
+  }
+
+  /// Visits every directed edge of the surface cells that have a usable area vector: first to
+  /// count (fill = false), then to fill.
+  template <class EdgeFn>
+  static void ForEachEdge(vtkPolyData* input, const unsigned char* status, const EdgeFn& edge)
+  {
+    const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
+    vtkCellArray* arrays[2] = { input->GetPolys(), input->GetStrips() };
+    vtkIdType first = firstPoly;
+    for (int strips = 0; strips < 2; ++strips)
+    {
+      vtkCellArray* cells = arrays[strips];
+      const vtkIdType n = cells ? cells->GetNumberOfCells() : 0;
+      if (n == 0)
+      {
+        continue;
+      }
+      cells->Visit(RawCells{},
+        [&](const auto* offsets, const auto* conn)
+        {
+          for (vtkIdType cell = 0; cell < n; ++cell)
+          {
+            const std::int64_t m = offsets[cell + 1] - offsets[cell];
+            if (status[first + cell] == phongvtk::StatusNonFinite || m < 2)
+            {
+              continue;
+            }
+            const auto* ids = conn + offsets[cell];
+            auto id = [&](std::int64_t i)
+            {
+              return static_cast<vtkIdType>(
+                ids[strips ? phongvtk::StripOutlineIndex(i % m, m) : i % m]);
+            };
+            for (std::int64_t i = 0; i < m; ++i)
+            {
+              edge(id(i), id(i + 1));
+            }
+          }
+        });
+      first += n;
+    }
+  }
+
+  /// The non-cancelling part of sum w, each component as a double-double.
+  void Compute(vtkPolyData* input, const unsigned char* status, DD sum[3])
+  {
+    ForEachEdge(input, status,
+      [this](vtkIdType a, vtkIdType b)
+      {
+        if (a != b)
+        {
+          ++this->Start[static_cast<std::size_t>(std::min(a, b)) + 1];
+        }
+      });
+    for (std::size_t i = 1; i < this->Start.size(); ++i)
+    {
+      this->Start[i] += this->Start[i - 1];
+    }
+    // Key: the larger id times two, plus one for the direction small -> large.
+    std::vector<vtkIdType> keys(static_cast<std::size_t>(this->Start.back()));
+    std::vector<vtkIdType> fill(this->Start.begin(), this->Start.end() - 1);
+    ForEachEdge(input, status,
+      [&](vtkIdType a, vtkIdType b)
+      {
+        if (a != b)
+        {
+          const vtkIdType low = std::min(a, b);
+          keys[static_cast<std::size_t>(fill[low]++)] = 2 * std::max(a, b) + (a < b ? 1 : 0);
+        }
+      });
+    this->Scale = this->ScaleExponent(keys);
+    sum[0] = sum[1] = sum[2] = DD{ 0.0, 0.0 };
+    for (std::size_t low = 0; low + 1 < this->Start.size(); ++low)
+    {
+      auto begin = keys.begin() + this->Start[low];
+      auto end = keys.begin() + this->Start[low + 1];
+      std::sort(begin, end);
+      for (auto it = begin; it != end;)
+      {
+        const vtkIdType high = *it / 2;
+        long net = 0;
+        for (; it != end && *it / 2 == high; ++it)
+        {
+          net += (*it & 1) ? 1 : -1;
+        }
+        for (long k = 0; k < std::labs(net); ++k)
+        {
+          this->AddCross(static_cast<vtkIdType>(low), high, net > 0, sum);
+        }
+      }
+    }
+  }
+
+  /// The sum is in units of 2^(2 Scale).
+  int Scale = 0;
+
+private:
+  /// Power of two bringing the largest coordinate used near 1 when products could overflow or
+  /// underflow.
+  int ScaleExponent(const std::vector<vtkIdType>& keys) const
+  {
+    double largest = 0.0;
+    for (std::size_t low = 0; low + 1 < this->Start.size(); ++low)
+    {
+      if (this->Start[low] == this->Start[low + 1])
+      {
+        continue;
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        largest = std::max(largest, std::fabs(static_cast<double>(this->Points[3 * low + c])));
+      }
+    }
+    for (vtkIdType key : keys)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        largest =
+          std::max(largest, std::fabs(static_cast<double>(this->Points[3 * (key / 2) + c])));
+      }
+    }
+    if (largest == 0.0 || (largest >= 0x1p-400 && largest <= 0x1p400))
+    {
+      return 0;
+    }
+    return phongvtk::detail::Exponent2(largest);
+  }
+
+  /// sum += (p_a x p_b) or its opposite, every product split exactly (TwoProduct).
+  void AddCross(vtkIdType a, vtkIdType b, bool positive, DD sum[3]) const
+  {
+    using namespace phongvtk::detail;
+    double p[3], q[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      p[c] = Scale2(static_cast<double>(this->Points[3 * a + c]), -this->Scale);
+      q[c] = Scale2(static_cast<double>(this->Points[3 * b + c]), -this->Scale);
+    }
+    const double sign = positive ? 1.0 : -1.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+      double h1, l1, h2, l2;
+      TwoProduct(p[c1], q[c2], h1, l1);
+      TwoProduct(p[c2], q[c1], h2, l2);
+      sum[c] = Add(sum[c], DD{ sign * h1, sign * l1 });
+      sum[c] = Add(sum[c], DD{ -sign * h2, -sign * l2 });
+    }
+  }
+
+  const T* Points;
+  std::vector<vtkIdType> Start;
+};
+
+vtkSmartPointer<vtkDoubleArray> NewScalar(const char* name, int components, const double* values)
+{
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(1);
+  for (int c = 0; c < components; ++c)
+  {
+    a->SetComponent(0, c, values[c]);
+  }
+  return a;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkVisibleArea::vtkVisibleArea() = default;
+
+vtkVisibleArea::~vtkVisibleArea()
+{
+  this->SetCamera(nullptr);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkVisibleArea::GetAccuracyAsString()
+{
+  switch (this->Accuracy)
+  {
+    case FAST:
+      return "FAST";
+    case COMPENSATED:
+      return "COMPENSATED";
+    case EXACT:
+      return "EXACT";
+    default:
+      return "DOUBLE";
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkVisibleArea::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  if (this->Camera)
+  {
+    t = std::max(t, this->Camera->GetMTime());
+  }
+  return t;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+/// The cell pass in accuracy mode A over the polygons and the strips.
+template <Accuracy A, class T>
+void RunCells(const CellPass<A, T>& pass, vtkPolyData* input)
+{
+  const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  const vtkIdType numPolys = input->GetNumberOfPolys();
+  const double total = std::max<double>(1.0, static_cast<double>(input->GetNumberOfCells()));
+  const double polyShare = 0.8 * static_cast<double>(numPolys) / total;
+  if (numPolys > 0)
+  {
+    input->GetPolys()->Visit(RawCells{},
+      [&](const auto* offsets, const auto* conn)
+      { pass.Run(offsets, conn, numPolys, firstPoly, false, 0.0, polyShare); });
+  }
+  const vtkIdType numStrips = input->GetNumberOfStrips();
+  if (numStrips > 0)
+  {
+    input->GetStrips()->Visit(RawCells{},
+      [&](const auto* offsets, const auto* conn)
+      { pass.Run(offsets, conn, numStrips, firstPoly + numPolys, true, polyShare, 0.8); });
+  }
+}
+
+template <class T>
+void RunCells(CellPass<Accuracy::Double, T> pass, int accuracy, vtkPolyData* input)
+{
+  // The same members for every mode: copy them into the mode's pass.
+  auto as = [&](auto mode)
+  {
+    constexpr Accuracy M = decltype(mode)::value;
+    CellPass<M, T> p{ pass.Filter, pass.Points, pass.NumberOfPoints, pass.TheView,
+      pass.InputAreaVectors, pass.Areas, pass.Status, pass.Counts };
+    RunCells(p, input);
+  };
+  switch (accuracy)
+  {
+    case vtkVisibleArea::FAST:
+      as(std::integral_constant<Accuracy, Accuracy::Fast>{});
+      break;
+    case vtkVisibleArea::COMPENSATED:
+      as(std::integral_constant<Accuracy, Accuracy::Compensated>{});
+      break;
+    case vtkVisibleArea::EXACT:
+      as(std::integral_constant<Accuracy, Accuracy::Exact>{});
+      break;
+    default:
+      RunCells(pass, input);
+      break;
+  }
+}
+
+/// Checks the point ids of the vertices and lines (they pass through; their visible area is 0).
+void CheckNonSurfaces(vtkPolyData* input, CellCounts& counts)
+{
+  vtkCellArray* arrays[2] = { input->GetVerts(), input->GetLines() };
+  vtkIdType first = 0;
+  for (vtkCellArray* cells : arrays)
+  {
+    const vtkIdType n = cells ? cells->GetNumberOfCells() : 0;
+    if (n > 0)
+    {
+      cells->Visit(RawCells{},
+        [&](const auto* offsets, const auto* conn)
+        {
+          for (vtkIdType cell = 0; cell < n; ++cell)
+          {
+            if (!ValidIds(conn + offsets[cell], offsets[cell + 1] - offsets[cell],
+                  input->GetNumberOfPoints()))
+            {
+              counts.BadCell(first + cell);
+            }
+          }
+        });
+    }
+    first += n;
+  }
+}
+
+/// Everything for one point type. Returns false (and firstBadCell) for out-of-range point ids.
+template <class T>
+bool Execute(vtkVisibleArea* self, vtkPolyData* input, const T* points, const View& view,
+  const double* inputAreaVectors, vtkDoubleArray* areas, vtkIdType& nonFinite,
+  vtkIdType& firstBadCell, DD sumW[3], int& sumScale)
+{
+  const vtkIdType numCells = input->GetNumberOfCells();
+  std::vector<unsigned char> status(
+    static_cast<std::size_t>(numCells), static_cast<unsigned char>(phongvtk::StatusNotSurface));
+  std::fill_n(areas->GetPointer(0), numCells, 0.0);
+  vtkSMPThreadLocal<CellCounts> counts;
+  CheckNonSurfaces(input, counts.Local());
+  CellPass<Accuracy::Double, T> pass{ self, points, input->GetNumberOfPoints(), view,
+    inputAreaVectors, areas->GetPointer(0), status.data(), &counts };
+  RunCells(pass, self->GetAccuracy(), input);
+  for (const CellCounts& c : counts)
+  {
+    nonFinite += c.NonFinite;
+    if (c.FirstBadCell >= 0 && (firstBadCell < 0 || c.FirstBadCell < firstBadCell))
+    {
+      firstBadCell = c.FirstBadCell;
+    }
+  }
+  if (firstBadCell >= 0 || self->GetAbortExecute())
+  {
+    return firstBadCell < 0;
+  }
+  if (self->GetComputeMaxVisibleArea())
+  {
+    EdgeSum<T> edges(points, input->GetNumberOfPoints());
+    edges.Compute(input, status.data(), sumW);
+    sumScale = edges.Scale;
+  }
+  return true;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+int vtkVisibleArea::RequestData(vtkInformation* vtkNotUsed(request),
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  this->TotalVisibleArea = 0.0;
+  this->MaxVisibleArea = 0.0;
+  std::fill_n(this->MaxVisibleAreaDirection, 3, 0.0);
+  output->ShallowCopy(input);
+
+  // The view.
+  View view;
+  if (this->Camera)
+  {
+    if (this->Camera->GetParallelProjection())
+    {
+      const double* dop = this->Camera->GetDirectionOfProjection();
+      std::copy(dop, dop + 3, view.Vector);
+      for (double& x : view.Vector)
+      {
+        x = -x;
+      }
+    }
+    else
+    {
+      view.Eye = true;
+      this->Camera->GetPosition(view.Vector);
+    }
+  }
+  else
+  {
+    std::copy(this->ViewDirection, this->ViewDirection + 3, view.Vector);
+  }
+  const double* v = view.Vector;
+  const bool finite = std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+  if (!finite || (!view.Eye && !phongvtk::detail::ScaleToUnitRange(view.Vector)))
+  {
+    vtkErrorMacro("The " << (view.Eye ? "camera position" : "view direction") << " (" << v[0]
+                         << ", " << v[1] << ", " << v[2]
+                         << ") is not a finite non-zero vector; the output is empty.");
+    output->Initialize();
+    return 1;
+  }
+  if (!view.Eye)
+  {
+    view.InverseLength = 1.0 / std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  }
+
+  const vtkIdType numCells = input->GetNumberOfCells();
+  vtkPoints* points = input->GetPoints();
+  if (!points && numCells > 0)
+  {
+    vtkErrorMacro("Input has " << numCells << " cells but no points.");
+    output->Initialize();
+    return 1;
+  }
+
+  // The input's area vectors, as doubles.
+  vtkSmartPointer<vtkDoubleArray> inputAreaVectors;
+  vtkDataArray* given = input->GetCellData()->GetArray("AreaVectors");
+  if (this->UseInputAreaVectors && this->Accuracy != EXACT && given &&
+    given->GetNumberOfComponents() == 3 && given->GetNumberOfTuples() == numCells)
+  {
+    inputAreaVectors = vtkDoubleArray::SafeDownCast(given);
+    if (!inputAreaVectors)
+    {
+      inputAreaVectors = vtkSmartPointer<vtkDoubleArray>::New();
+      inputAreaVectors->DeepCopy(given);
+    }
+  }
+
+  auto areas = vtkSmartPointer<vtkDoubleArray>::New();
+  areas->SetName("VisibleArea");
+  areas->SetNumberOfTuples(numCells);
+  vtkIdType nonFinite = 0, firstBadCell = -1;
+  DD sumW[3] = { { 0.0, 0.0 }, { 0.0, 0.0 }, { 0.0, 0.0 } };
+  int sumScale = 0;
+  bool ok = true;
+  if (numCells > 0)
+  {
+    // The kernels read float or double coordinates in place; any other type is converted once.
+    vtkDataArray* data = points->GetData();
+    vtkSmartPointer<vtkDoubleArray> converted;
+    if (data->GetDataType() != VTK_FLOAT && data->GetDataType() != VTK_DOUBLE)
+    {
+      converted = vtkSmartPointer<vtkDoubleArray>::New();
+      converted->DeepCopy(data);
+      data = converted;
+    }
+    const double* reuse = inputAreaVectors ? inputAreaVectors->GetPointer(0) : nullptr;
+    void* raw = data->GetVoidPointer(0);
+    ok = data->GetDataType() == VTK_FLOAT
+      ? Execute(this, input, static_cast<const float*>(raw), view, reuse, areas, nonFinite,
+          firstBadCell, sumW, sumScale)
+      : Execute(this, input, static_cast<const double*>(raw), view, reuse, areas, nonFinite,
+          firstBadCell, sumW, sumScale);
+  }
+  if (!ok)
+  {
+    vtkErrorMacro("Cell " << firstBadCell << " refers to a point id outside [0, "
+                          << input->GetNumberOfPoints() << "); the output is empty.");
+    output->Initialize();
+    return 1;
+  }
+  if (this->GetAbortExecute())
+  {
+    output->Initialize();
+    return 1;
+  }
+  if (nonFinite > 0)
+  {
+    vtkWarningMacro(<< nonFinite
+                    << " cell(s) have non-finite (NaN or Inf) point coordinates or area vectors; "
+                       "their visible area is 0.");
+  }
+
+  // The front faces' total, in double-double (deterministic: cell order).
+  DD total = { 0.0, 0.0 };
+  const double* a = areas->GetPointer(0);
+  for (vtkIdType cell = 0; cell < numCells; ++cell)
+  {
+    if (a[cell] > 0.0)
+    {
+      total = phongvtk::detail::Add(total, DD{ a[cell], 0.0 });
+    }
+  }
+  this->TotalVisibleArea = total.Hi + total.Lo;
+
+  vtkCellData* cd = output->GetCellData();
+  cd->AddArray(areas);
+  vtkFieldData* fd = output->GetFieldData();
+  fd->AddArray(NewScalar("TotalVisibleArea", 1, &this->TotalVisibleArea));
+  if (this->ComputeMaxVisibleArea)
+  {
+    double length;
+    int exponent;
+    if (phongvtk::detail::NormalizeFaithful(sumW, this->MaxVisibleAreaDirection, length, exponent))
+    {
+      this->MaxVisibleArea = phongvtk::detail::ScaleSaturated(length, exponent + 2 * sumScale - 1);
+    }
+    fd->AddArray(NewScalar("MaxVisibleAreaDirection", 3, this->MaxVisibleAreaDirection));
+    fd->AddArray(NewScalar("MaxVisibleArea", 1, &this->MaxVisibleArea));
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibleArea::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ViewDirection: (" << this->ViewDirection[0] << ", " << this->ViewDirection[1]
+     << ", " << this->ViewDirection[2] << ")\n";
+  os << indent << "Camera: " << this->Camera << "\n";
+  os << indent << "Accuracy: " << this->GetAccuracyAsString() << "\n";
+  os << indent << "UseInputAreaVectors: " << (this->UseInputAreaVectors ? "On" : "Off") << "\n";
+  os << indent << "ComputeMaxVisibleArea: " << (this->ComputeMaxVisibleArea ? "On" : "Off") << "\n";
+  os << indent << "TotalVisibleArea: " << this->TotalVisibleArea << "\n";
+  os << indent << "MaxVisibleArea: " << this->MaxVisibleArea << "\n";
+}

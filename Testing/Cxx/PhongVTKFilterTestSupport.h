@@ -1,0 +1,126 @@
+/**
+ * @file PhongVTKFilterTestSupport.h
+ * @brief Building poly data from point and cell lists, and catching a filter's messages, for the
+ * filter tests.
+ */
+#ifndef PhongVTKFilterTestSupport_h
+#define PhongVTKFilterTestSupport_h
+
+#include "PhongVTKExactReference.h"
+
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <string>
+#include <vector>
+
+namespace phongvtk_test
+{
+using Cell = std::vector<vtkIdType>;
+
+struct Cells
+{
+  std::vector<Cell> Verts, Lines, Polys, Strips;
+};
+
+inline vtkSmartPointer<vtkCellArray> MakeCellArray(const std::vector<Cell>& cells)
+{
+  auto array = vtkSmartPointer<vtkCellArray>::New();
+  for (const Cell& cell : cells)
+  {
+    array->InsertNextCell(static_cast<vtkIdType>(cell.size()), cell.data());
+  }
+  return array;
+}
+
+/// Poly data from points (stored as float or double) and cells. The cell arrays are set in the
+/// reverse of VTK's cell order, which must not matter.
+inline vtkSmartPointer<vtkPolyData> MakePolyData(
+  const std::vector<Point>& points, const Cells& cells, int pointType = VTK_DOUBLE)
+{
+  vtkNew<vtkPoints> pts;
+  pts->SetDataType(pointType);
+  pts->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    pts->SetPoint(static_cast<vtkIdType>(i), points[i].data());
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(pts);
+  if (!cells.Strips.empty())
+  {
+    mesh->SetStrips(MakeCellArray(cells.Strips));
+  }
+  if (!cells.Polys.empty())
+  {
+    mesh->SetPolys(MakeCellArray(cells.Polys));
+  }
+  if (!cells.Lines.empty())
+  {
+    mesh->SetLines(MakeCellArray(cells.Lines));
+  }
+  if (!cells.Verts.empty())
+  {
+    mesh->SetVerts(MakeCellArray(cells.Verts));
+  }
+  return mesh;
+}
+
+inline std::vector<Point> PointsOf(vtkPolyData* mesh)
+{
+  std::vector<Point> points(static_cast<std::size_t>(mesh->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    mesh->GetPoint(i, points[static_cast<std::size_t>(i)].data());
+  }
+  return points;
+}
+
+/// A copy of `mesh` with points p * scale + offset (computed in double, stored as pointType).
+inline vtkSmartPointer<vtkPolyData> Transformed(
+  vtkPolyData* mesh, double scale, double offset, int pointType = VTK_DOUBLE)
+{
+  vtkNew<vtkPoints> pts;
+  pts->SetDataType(pointType);
+  pts->SetNumberOfPoints(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    for (double& x : p)
+    {
+      x = x * scale + offset;
+    }
+    pts->SetPoint(i, p);
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->CopyStructure(mesh);
+  out->SetPoints(pts);
+  return out;
+}
+
+/// Receives the error and warning events of a filter (what vtkTest::ErrorObserver does).
+class MessageObserver : public vtkCommand
+{
+public:
+  static MessageObserver* New() { return new MessageObserver; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    const std::string text = data ? static_cast<const char*>(data) : "";
+    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings).push_back(text);
+  }
+  void Watch(vtkObject* object)
+  {
+    object->AddObserver(vtkCommand::ErrorEvent, this);
+    object->AddObserver(vtkCommand::WarningEvent, this);
+  }
+  std::vector<std::string> Errors;
+  std::vector<std::string> Warnings;
+};
+} // namespace phongvtk_test
+
+#endif
