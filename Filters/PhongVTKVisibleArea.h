@@ -361,9 +361,11 @@ VisibleAreaResult ComputeVisibleArea(const VertexFn& vertex, std::int64_t n, con
   }
   else
   {
+    // The area vector is all that is needed: a pending result (w inside the safe window) is not
+    // normalised.
     AreaVector w;
-    ComputeAreaVector<A, T>(vertex, n, w);
-    if (w.Status != StatusOk)
+    ComputeAreaVectorDeferred<A, T>(vertex, n, w);
+    if (w.Status != StatusOk && w.Status != StatusPending)
     {
       return { 0.0, w.Status };
     }

@@ -10,11 +10,14 @@
 // floor of cell normals is the bytes the filter must touch divided by the streaming bandwidth
 // measured by a copy benchmark in the same run.
 #include "vtkPolygonNormals.h"
+#include "vtkVisibleArea.h"
 
 #include "PhongVTKBenchmarkMeshes.h"
 
+#include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkMassProperties.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkSMPTools.h"
 #include "vtkTriangleMeshPointNormals.h"
@@ -88,6 +91,40 @@ void PolygonNormals(benchmark::State& state, vtkPolyData* input, int accuracy, b
   f->SetComputeCellNormals(!points);
   f->SetComputePointNormals(points);
   RunFilter(state, f, input);
+}
+
+/// vtkVisibleArea toward (1, 2, 2) or from a perspective camera, with or without the edge pass
+/// of MaxVisibleArea.
+void VisibleArea(
+  benchmark::State& state, vtkPolyData* input, int accuracy, bool camera, bool maxArea)
+{
+  vtkNew<vtkVisibleArea> f;
+  f->SetAccuracy(accuracy);
+  f->SetViewDirection(1.0, 2.0, 2.0);
+  f->SetComputeMaxVisibleArea(maxArea);
+  vtkNew<vtkCamera> eye;
+  if (camera)
+  {
+    double b[6];
+    input->GetBounds(b);
+    eye->SetFocalPoint((b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2);
+    eye->SetPosition(b[1] + 2 * (b[1] - b[0]), b[3], b[5]);
+    f->SetCamera(eye);
+  }
+  RunFilter(state, f, input);
+}
+
+/// VTK's total surface area (triangles), the nearest stock filter.
+void MassProperties(benchmark::State& state, vtkPolyData* input)
+{
+  vtkNew<vtkMassProperties> f;
+  f->SetInputData(input);
+  for (auto _ : state)
+  {
+    f->Modified();
+    f->Update();
+    benchmark::DoNotOptimize(f->GetSurfaceArea());
+  }
 }
 
 /// Streaming bandwidth: copy of a 256 MiB buffer (read + write bytes per second).
@@ -185,7 +222,14 @@ int main(int argc, char** argv)
         [data, mode](benchmark::State& s) { PolygonNormals(s, data, mode, false); });
       reg(std::string("PolygonNormals.Points.") + ModeName(mode),
         [data, mode](benchmark::State& s) { PolygonNormals(s, data, mode, true); });
+      reg(std::string("VisibleArea.Direction.") + ModeName(mode),
+        [data, mode](benchmark::State& s) { VisibleArea(s, data, mode, false, false); });
+      reg(std::string("VisibleArea.Camera.") + ModeName(mode),
+        [data, mode](benchmark::State& s) { VisibleArea(s, data, mode, true, false); });
     }
+    reg("VisibleArea.Direction.DOUBLE+MaxVisibleArea",
+      [data](benchmark::State& s) { VisibleArea(s, data, vtkVisibleArea::DOUBLE, false, true); });
+    reg("vtkMassProperties", [data](benchmark::State& s) { MassProperties(s, data); });
   }
 
   RatioReporter reporter;
@@ -224,6 +268,30 @@ int main(int argc, char** argv)
       std::printf("%-12s %10.2f %11.1fx %9.2fx | %10.2f %12.1fx %13.1fx\n", ModeName(mode),
         1e3 * cells, cellsAnchor / cells, floor > 0 ? cells / floor : 0.0, 1e3 * points,
         pointsAnchor / points, triangleAnchor / points);
+    }
+  }
+  for (const Mesh& mesh : Meshes())
+  {
+    const std::string m = mesh.Name + "/";
+    const double normals = seconds(m + "PolygonNormals.Cells.DOUBLE");
+    const double mass = seconds(m + "vtkMassProperties");
+    const double edges = seconds(m + "VisibleArea.Direction.DOUBLE+MaxVisibleArea") -
+      seconds(m + "VisibleArea.Direction.DOUBLE");
+    std::printf("\n%s vtkVisibleArea (ratio = time / anchor; anchors: PolygonNormals DOUBLE cells "
+                "%.2f ms, vtkMassProperties %.2f ms; MaxVisibleArea's edge pass adds %.2f ms)\n",
+      mesh.Name.c_str(), 1e3 * normals, 1e3 * mass, 1e3 * edges);
+    std::printf("%-12s %12s %10s %10s | %12s %10s\n", "mode", "direction ms", "/normals", "/mass",
+      "camera ms", "/normals");
+    for (int mode = vtkPolygonNormals::FAST; mode <= vtkPolygonNormals::EXACT; ++mode)
+    {
+      const double direction = seconds(m + "VisibleArea.Direction." + ModeName(mode));
+      const double camera = seconds(m + "VisibleArea.Camera." + ModeName(mode));
+      if (direction <= 0 || camera <= 0 || normals <= 0 || mass <= 0)
+      {
+        continue;
+      }
+      std::printf("%-12s %12.2f %9.2fx %9.2fx | %12.2f %9.2fx\n", ModeName(mode), 1e3 * direction,
+        direction / normals, direction / mass, 1e3 * camera, camera / normals);
     }
   }
   benchmark::Shutdown();
