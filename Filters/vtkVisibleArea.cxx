@@ -199,12 +199,14 @@ public:
   /// The non-cancelling part of sum w, each component as a double-double.
   void Compute(vtkPolyData* input, const unsigned char* status, DD sum[3])
   {
+    std::vector<unsigned char> used(this->Start.size() - 1, 0);
     ForEachEdge(input, status,
-      [this](vtkIdType a, vtkIdType b)
+      [&](vtkIdType a, vtkIdType b)
       {
         if (a != b)
         {
           ++this->Start[static_cast<std::size_t>(std::min(a, b)) + 1];
+          used[static_cast<std::size_t>(a)] = 1;
         }
       });
     for (std::size_t i = 1; i < this->Start.size(); ++i)
@@ -223,13 +225,23 @@ public:
           keys[static_cast<std::size_t>(fill[low]++)] = 2 * std::max(a, b) + (a < b ? 1 : 0);
         }
       });
-    this->Scale = this->ScaleExponent(keys);
+    this->Scale = this->ScaleExponent(used);
     sum[0] = sum[1] = sum[2] = DD{ 0.0, 0.0 };
     for (std::size_t low = 0; low + 1 < this->Start.size(); ++low)
     {
       auto begin = keys.begin() + this->Start[low];
       auto end = keys.begin() + this->Start[low + 1];
-      std::sort(begin, end);
+      // Buckets hold a handful of edges: insertion sort.
+      for (auto it = begin + (begin != end ? 1 : 0); it < end; ++it)
+      {
+        const vtkIdType key = *it;
+        auto hole = it;
+        for (; hole != begin && *(hole - 1) > key; --hole)
+        {
+          *hole = *(hole - 1);
+        }
+        *hole = key;
+      }
       for (auto it = begin; it != end;)
       {
         const vtkIdType high = *it / 2;
@@ -252,26 +264,17 @@ public:
 private:
   /// Power of two bringing the largest coordinate used near 1 when products could overflow or
   /// underflow.
-  int ScaleExponent(const std::vector<vtkIdType>& keys) const
+  int ScaleExponent(const std::vector<unsigned char>& used) const
   {
     double largest = 0.0;
-    for (std::size_t low = 0; low + 1 < this->Start.size(); ++low)
+    for (std::size_t i = 0; i < used.size(); ++i)
     {
-      if (this->Start[low] == this->Start[low + 1])
+      if (used[i])
       {
-        continue;
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        largest = std::max(largest, std::fabs(static_cast<double>(this->Points[3 * low + c])));
-      }
-    }
-    for (vtkIdType key : keys)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        largest =
-          std::max(largest, std::fabs(static_cast<double>(this->Points[3 * (key / 2) + c])));
+        for (int c = 0; c < 3; ++c)
+        {
+          largest = std::max(largest, std::fabs(static_cast<double>(this->Points[3 * i + c])));
+        }
       }
     }
     if (largest == 0.0 || (largest >= 0x1p-400 && largest <= 0x1p400))
