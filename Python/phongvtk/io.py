@@ -1,0 +1,392 @@
+"""Reading and writing meshes for the command-line interface.
+
+Meshes are read with VTK's readers (PLY, STL, OBJ, VTP, legacy VTK) and, for OFF (the format of
+CGAL's sample data), with :func:`read_off`. Every failure is a
+:class:`~phongvtk.errors.CommandError` with a one-line message naming the file: missing,
+empty, unreadable or corrupt, of an unknown kind, or not a surface (no polygons or triangle
+strips). CGAL's bunny comes from Debian's libcgal-demo archive (:func:`cgal_mesh`); a parametric
+torus stands in when the archive is absent (:func:`default_mesh`).
+"""
+
+import os
+import tarfile
+import tempfile
+
+import numpy as np
+from vtkmodules.util import numpy_support
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
+from vtkmodules.vtkFiltersCore import vtkTriangleFilter
+from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource
+from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader, vtkSTLWriter
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkIOLegacy import vtkPolyDataReader, vtkPolyDataWriter
+from vtkmodules.vtkIOPLY import vtkPLYReader, vtkPLYWriter
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
+
+from .errors import CommandError
+from .progress import Progress
+
+#: Extensions read by VTK's readers (lower case), and the reader of each.
+VTK_READERS = {
+    ".ply": vtkPLYReader,
+    ".stl": vtkSTLReader,
+    ".obj": vtkOBJReader,
+    ".vtp": vtkXMLPolyDataReader,
+    ".vtk": vtkPolyDataReader,
+}
+#: Every extension :func:`read_mesh` understands.
+MESH_EXTENSIONS = (".off",) + tuple(VTK_READERS)
+#: Extensions :func:`write_mesh` understands, and the writer of each.
+MESH_WRITERS = {
+    ".vtp": vtkXMLPolyDataWriter,
+    ".vtk": vtkPolyDataWriter,
+    ".ply": vtkPLYWriter,
+    ".stl": vtkSTLWriter,
+}
+
+#: Debian's libcgal-demo ships CGAL's sample data in this archive (meshes under data/meshes/).
+CGAL_DATA_ARCHIVE = "/usr/share/doc/libcgal-dev/data.tar.gz"
+
+
+def extension(path):
+    """The lower-case extension of `path`, with its dot ("" when it has none)."""
+    return os.path.splitext(path)[1].lower()
+
+
+def check_readable(path):
+    """Raises CommandError unless `path` is an existing, non-empty file that can be opened."""
+    if not os.path.exists(path):
+        raise CommandError(f"'{path}': no such file")
+    if os.path.isdir(path):
+        raise CommandError(f"'{path}' is a directory, not a mesh file")
+    try:
+        with open(path, "rb") as file:
+            empty = not file.read(1)
+    except OSError as error:
+        raise CommandError(f"cannot open '{path}': {error.strerror}") from None
+    if empty:
+        raise CommandError(f"'{path}' is empty")
+
+
+def read_mesh(path, progress=None):
+    """The surface mesh in the file `path` (kind by extension, see MESH_EXTENSIONS).
+
+    Raises CommandError when the file is missing, empty, unreadable, of an unknown kind, or has
+    no polygons or triangle strips.
+    """
+    progress = progress or Progress(quiet=True)
+    kind = extension(path)
+    if kind not in MESH_EXTENSIONS:
+        known = " ".join(MESH_EXTENSIONS)
+        raise CommandError(f"'{path}': unknown mesh format '{kind or '(none)'}' (known: {known})")
+    check_readable(path)
+    name = os.path.basename(path)
+    if kind == ".off":
+        mesh = read_off(path, progress)
+    else:
+        if kind in SNIFFERS:
+            SNIFFERS[kind](path)
+        reader = VTK_READERS[kind]()
+        reader.SetFileName(path)
+        what = f"cannot read '{path}' as {kind[1:].upper()}"
+        progress.run(reader, f"read {name}", what)
+        mesh = reader.GetOutput()
+    check_surface(mesh, path)
+    return mesh
+
+
+def check_ply_header(path):
+    """Raises CommandError unless `path` starts like a PLY file ('ply', then 'format ...' and
+    'end_header' in the header): vtkPLYReader says "Could not open" for any bad header."""
+    with open(path, "rb") as file:
+        head = file.read(1 << 16)
+    lines = [line.strip() for line in head.split(b"\n")]
+    if not lines or lines[0] != b"ply" or b"end_header" not in lines:
+        raise CommandError(f"'{path}' is not a PLY file: no header 'ply' ... 'end_header'")
+    if not any(line.startswith(b"format ") for line in lines[:4]):
+        raise CommandError(f"'{path}' is not a PLY file: no 'format' line in its header")
+
+
+def check_stl_size(path):
+    """Raises CommandError when `path` would be read as binary STL (VTK's test: a byte above 127
+    in the first 256) but is not 80 + 4 + 50 n bytes long for its n triangles: vtkSTLReader
+    trusts the count and aborts the process on a corrupt one."""
+    with open(path, "rb") as file:
+        head = file.read(256)
+    if all(byte < 128 for byte in head):
+        return  # ASCII: vtkSTLReader's parser reports errors itself
+    size = os.path.getsize(path)
+    triangles = int.from_bytes(head[80:84], "little") if len(head) >= 84 else None
+    if triangles is None or size < 84 + 50 * triangles:
+        raise CommandError(f"'{path}' is not a valid STL file: not ASCII, and too short for a "
+                           "binary STL of the triangle count in its header")
+
+
+#: Checks of a file before VTK's reader sees it, by extension.
+SNIFFERS = {".ply": check_ply_header, ".stl": check_stl_size}
+
+
+def check_output(path, extensions):
+    """Raises CommandError unless `path` ends with one of `extensions` (checked before any
+    work, so that a typo does not cost a long computation)."""
+    if extension(path) not in extensions:
+        raise CommandError(f"'{path}': cannot write '{extension(path) or '(none)'}' files "
+                           f"(known: {' '.join(extensions)})")
+
+
+def check_surface(mesh, path):
+    """Raises CommandError unless `mesh` (read from `path`) has polygons or triangle strips."""
+    if mesh.GetNumberOfPolys() + mesh.GetNumberOfStrips() > 0:
+        return
+    parts = [
+        f"{count} {noun}{'' if count == 1 else 's'}"
+        for count, noun in (
+            (mesh.GetNumberOfPoints(), "point"),
+            (mesh.GetNumberOfVerts(), "vertex cell"),
+            (mesh.GetNumberOfLines(), "line"),
+        )
+        if count
+    ]
+    holds = ", ".join(parts) if parts else "nothing"
+    raise CommandError(f"'{path}' is not a surface: it holds {holds}, no polygons or strips")
+
+
+# --- OFF ------------------------------------------------------------------------------------
+
+
+def off_lines(text):
+    """The lines of OFF `text` that hold something, as (line number, tokens); '#' starts a
+    comment that runs to the end of its line."""
+    for number, line in enumerate(text.splitlines(), start=1):
+        tokens = line.split("#", 1)[0].split()
+        if tokens:
+            yield number, tokens
+
+
+def is_off_keyword(token):
+    """True for OFF with any of Geomview's optional prefixes ST, C, N (COFF, NOFF, STCNOFF...)."""
+    if not token.endswith("OFF"):
+        return False
+    rest = token[:-3]
+    for prefix in ("ST", "C", "N"):
+        if rest.startswith(prefix):
+            rest = rest[len(prefix):]
+    return rest == ""
+
+
+def parse_count(token):
+    """A non-negative integer token, or None."""
+    return int(token) if token.isascii() and token.isdigit() else None
+
+
+def shown(tokens, limit=40):
+    """The tokens of a line as quoted in a message, shortened to about `limit` characters."""
+    text = " ".join(tokens)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def parse_off(text, name="OFF"):
+    """Parses ASCII OFF `text` into (points, offsets, connectivity) numpy arrays.
+
+    Understood: an optional header keyword (OFF, COFF, NOFF, STOFF...) with the counts
+    ``vertices faces [edges]`` on the same line or the next, ``#`` comments, blank lines, one
+    vertex per line (x y z, then anything: colours, normals are ignored), one face per line
+    (``n i0 ... i(n-1)``, then optionally a colour, ignored). Coordinates are Python floats, i.e.
+    the decimal values correctly rounded to double. Raises CommandError ("name:line: why").
+    """
+    lines = off_lines(text)
+
+    def next_line(expected):
+        try:
+            return next(lines)
+        except StopIteration:
+            raise CommandError(f"{name}: unexpected end of file, expected {expected}") from None
+
+    number, tokens = next_line("the OFF header")
+    if is_off_keyword(tokens[0]):
+        tokens = tokens[1:]
+        if tokens and tokens[0] == "BINARY":
+            raise CommandError(f"{name}:{number}: binary OFF is not supported")
+        if not tokens:
+            number, tokens = next_line("the counts 'vertices faces edges'")
+    elif tokens[0].endswith("OFF"):
+        raise CommandError(f"{name}:{number}: the header '{tokens[0]}' is not supported")
+    counts = [parse_count(token) for token in tokens]
+    if not 2 <= len(counts) <= 3 or None in counts:
+        raise CommandError(
+            f"{name}:{number}: expected the OFF header or the counts 'vertices faces edges', "
+            f"found '{shown(tokens)}'"
+        )
+    num_points, num_faces = counts[0], counts[1]
+    if num_points + num_faces > text.count("\n") + 1:  # before allocating for them
+        raise CommandError(f"{name}:{number}: the counts say {num_points} vertices and "
+                           f"{num_faces} faces, more than the file has lines")
+
+    points = np.empty((num_points, 3))
+    for i in range(num_points):
+        number, tokens = next_line(f"vertex {i} of {num_points}")
+        try:
+            if len(tokens) < 3:
+                raise ValueError("too few coordinates")
+            points[i] = [float(token) for token in tokens[:3]]
+        except ValueError:
+            raise CommandError(
+                f"{name}:{number}: expected the coordinates 'x y z' of vertex {i}, "
+                f"found '{shown(tokens)}'"
+            ) from None
+
+    offsets = np.zeros(num_faces + 1, dtype=np.int64)
+    connectivity = []
+    for f in range(num_faces):
+        number, tokens = next_line(f"face {f} of {num_faces}")
+        size = parse_count(tokens[0])
+        ids = [parse_count(token) for token in tokens[1:1 + size]] if size is not None else []
+        if size is None or size < 3 or len(ids) < size or None in ids:
+            raise CommandError(
+                f"{name}:{number}: expected face {f} as 'n i0 ... i(n-1)' with n >= 3, "
+                f"found '{shown(tokens)}'"
+            )
+        bad = [i for i in ids if i >= num_points]
+        if bad:
+            raise CommandError(
+                f"{name}:{number}: face {f} has the vertex index {bad[0]}, "
+                f"not in [0, {num_points})"
+            )
+        connectivity.extend(ids)
+        offsets[f + 1] = len(connectivity)
+    return points, offsets, np.array(connectivity, dtype=np.int64)
+
+
+def polydata_from_arrays(points, offsets, connectivity):
+    """A vtkPolyData with double `points` (n x 3) and one polygon per face given as VTK's
+    offsets and connectivity arrays."""
+    vtk_points = vtkPoints()
+    vtk_points.SetData(numpy_support.numpy_to_vtk(np.ascontiguousarray(points), deep=True))
+    polys = vtkCellArray()
+    polys.SetData(
+        numpy_support.numpy_to_vtkIdTypeArray(offsets, deep=True),
+        numpy_support.numpy_to_vtkIdTypeArray(connectivity, deep=True),
+    )
+    mesh = vtkPolyData()
+    mesh.SetPoints(vtk_points)
+    mesh.SetPolys(polys)
+    return mesh
+
+
+def read_off(path, progress=None):
+    """The ASCII OFF file at `path` as a vtkPolyData (see :func:`parse_off`): double points, one
+    polygon per face in file order (cell id = face index)."""
+    progress = progress or Progress(quiet=True)
+    bar = progress.bar(f"read {os.path.basename(path)}")
+    try:
+        with open(path, "rb") as file:
+            text = file.read().decode("utf-8-sig", errors="replace")
+    except OSError as error:
+        raise CommandError(f"cannot open '{path}': {error.strerror}") from None
+    bar.update(0.3)
+    try:
+        mesh = polydata_from_arrays(*parse_off(text, path))
+    except CommandError:
+        bar.abandon()
+        raise
+    bar.finish()
+    return mesh
+
+
+# --- writing --------------------------------------------------------------------------------
+
+
+def write_mesh(mesh, path, progress=None):
+    """Writes the vtkPolyData `mesh` to `path`, the kind by extension (see MESH_WRITERS).
+
+    VTP and legacy VTK keep every array; PLY keeps the geometry (and what vtkPLYWriter writes of
+    point data); STL keeps only triangles (polygons and strips are triangulated).
+    """
+    progress = progress or Progress(quiet=True)
+    check_output(path, MESH_WRITERS)
+    kind = extension(path)
+    if kind == ".stl":
+        triangles = vtkTriangleFilter()
+        triangles.SetInputData(mesh)
+        triangles.Update()
+        mesh = triangles.GetOutput()
+    writer = MESH_WRITERS[kind]()
+    writer.SetInputData(mesh)
+    writer.SetFileName(path)
+    progress.run(writer, f"write {os.path.basename(path)}", f"cannot write '{path}'", "Write")
+
+
+def write_png(image, path, progress=None):
+    """Writes the vtkImageData `image` (RGB or RGBA, unsigned char) as a PNG file."""
+    progress = progress or Progress(quiet=True)
+    check_output(path, [".png"])
+    writer = vtkPNGWriter()
+    writer.SetCompressionLevel(9)  # smallest files; images here are small, so it costs little
+    writer.SetInputData(image)
+    writer.SetFileName(path)
+    progress.run(writer, f"write {os.path.basename(path)}", f"cannot write '{path}'", "Write")
+    # vtkPNGWriter reports a file it cannot open through its error code only.
+    if writer.GetErrorCode() or not os.path.isfile(path):
+        raise CommandError(f"cannot write '{path}'")
+
+
+# --- data nobody here wrote -----------------------------------------------------------------
+
+
+def cache_dir():
+    """Where extracted sample data is kept: $XDG_CACHE_HOME/phongvtk (~/.cache/phongvtk)."""
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return os.path.join(base, "phongvtk")
+
+
+def cgal_mesh(name="bunny00.off", archive=CGAL_DATA_ARCHIVE):
+    """Path of CGAL's sample mesh `name` (data/meshes/<name> in Debian's libcgal-demo archive),
+    extracted once into :func:`cache_dir` (a temporary directory when that is not writable), or
+    None when the archive or the mesh is absent."""
+    for directory in (cache_dir(), os.path.join(tempfile.gettempdir(), f"phongvtk-{os.getuid()}")):
+        path = os.path.join(directory, name)
+        if os.path.isfile(path):
+            return path
+        if not os.path.isfile(archive):
+            return None
+        try:
+            os.makedirs(directory, exist_ok=True)
+            with tarfile.open(archive) as tar:
+                member = tar.extractfile(f"data/meshes/{name}")
+                data = member.read()
+            partial = f"{path}.{os.getpid()}.part"  # concurrent runs never see half a file
+            with open(partial, "wb") as file:
+                file.write(data)
+            os.replace(partial, path)
+            return path
+        except KeyError:
+            return None  # not in the archive
+        except (OSError, tarfile.TarError):
+            continue  # not writable (or a broken archive): try the next directory
+    return None
+
+
+def parametric_surface(resolution=256):
+    """A torus from vtkParametricFunctionSource (ring radius 1, tube radius 0.5), 2 r^2
+    triangles, without the source's normals."""
+    torus = vtkParametricTorus()
+    source = vtkParametricFunctionSource()
+    source.SetParametricFunction(torus)
+    source.SetUResolution(resolution)
+    source.SetVResolution(resolution)
+    source.GenerateNormalsOff()
+    source.GenerateTextureCoordinatesOff()
+    source.SetOutputPointsPrecision(source.DOUBLE_PRECISION)
+    source.Update()
+    return source.GetOutput()
+
+
+def default_mesh(progress=None, resolution=256):
+    """(mesh, label): CGAL's bunny when Debian's libcgal-demo is installed, else a parametric
+    torus of `resolution` squared quads split in two."""
+    path = cgal_mesh()
+    if path is not None:
+        return read_mesh(path, progress), os.path.basename(path)
+    return parametric_surface(resolution), f"parametric torus {resolution}x{resolution}"
