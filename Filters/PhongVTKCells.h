@@ -1,10 +1,15 @@
 /**
  * @file PhongVTKCells.h
- * @brief Private helpers shared by the PhongVTK filters for walking a vtkCellArray's raw storage.
+ * @brief Private helpers shared by the PhongVTK filters for reading a vtkPolyData's raw storage:
+ * point coordinates and cell arrays.
  */
 #ifndef PhongVTKCells_h
 #define PhongVTKCells_h
 
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkPoints.h"
+#include "vtkSmartPointer.h"
 #include "vtkType.h"
 
 #include <cstdint>
@@ -24,6 +29,20 @@ inline bool ValidIds(const Connectivity* ids, std::int64_t n, vtkIdType numberOf
     valid &= static_cast<UnsignedId>(ids[k]) < limit;
   }
   return valid;
+}
+
+/// The coordinates as the kernels read them: the points' own array when float or double (read in
+/// place), else a double copy made once.
+inline vtkSmartPointer<vtkDataArray> KernelCoordinates(vtkPoints* points)
+{
+  vtkDataArray* data = points->GetData();
+  if (data->GetDataType() == VTK_FLOAT || data->GetDataType() == VTK_DOUBLE)
+  {
+    return data;
+  }
+  auto converted = vtkSmartPointer<vtkDoubleArray>::New();
+  converted->DeepCopy(data);
+  return converted;
 }
 
 /// vtkCellArray::Visit functor handing the typed offsets and connectivity pointers to `fn`.

@@ -1021,16 +1021,8 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
     return 1;
   }
 
-  // The kernels read float or double coordinates in place; any other type is converted once.
-  vtkDataArray* data = points->GetData();
-  vtkSmartPointer<vtkDoubleArray> converted;
-  const int pointType = data->GetDataType();
-  if (pointType != VTK_FLOAT && pointType != VTK_DOUBLE)
-  {
-    converted = vtkSmartPointer<vtkDoubleArray>::New();
-    converted->DeepCopy(data);
-    data = converted;
-  }
+  vtkSmartPointer<vtkDataArray> data = phongvtk::KernelCoordinates(points);
+  const int pointType = points->GetData()->GetDataType();
   const bool doubleOutput = this->OutputPrecision == DOUBLE_PRECISION ||
     (this->OutputPrecision == DEFAULT_PRECISION && pointType == VTK_DOUBLE);
 

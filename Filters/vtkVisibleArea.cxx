@@ -562,15 +562,7 @@ int vtkVisibleArea::RequestData(vtkInformation* vtkNotUsed(request),
   bool ok = true;
   if (numCells > 0)
   {
-    // The kernels read float or double coordinates in place; any other type is converted once.
-    vtkDataArray* data = points->GetData();
-    vtkSmartPointer<vtkDoubleArray> converted;
-    if (data->GetDataType() != VTK_FLOAT && data->GetDataType() != VTK_DOUBLE)
-    {
-      converted = vtkSmartPointer<vtkDoubleArray>::New();
-      converted->DeepCopy(data);
-      data = converted;
-    }
+    vtkSmartPointer<vtkDataArray> data = phongvtk::KernelCoordinates(points);
     const double* reuse = inputAreaVectors ? inputAreaVectors->GetPointer(0) : nullptr;
     void* raw = data->GetVoidPointer(0);
     ok = data->GetDataType() == VTK_FLOAT
