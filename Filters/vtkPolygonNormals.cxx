@@ -2,6 +2,7 @@
 
 #include "PhongVTKAreaVector.h"
 #include "PhongVTKCells.h"
+#include "PhongVTKOptions.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -16,6 +17,7 @@
 #include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -360,20 +362,72 @@ inline int ScaledEdge(const T* q, const T* v, double e[3])
   return k + extra;
 }
 
+/// One face's contribution to a point normal: `V * 2^E`, and the next contribution to the same
+/// point (-1: none).
+struct Contribution
+{
+  double V[3];
+  int E;
+  std::int32_t Next;
+};
+
+/// A key whose integer order is the order of the doubles, -0 before +0 (a total order on the
+/// finite values, all a contribution holds).
+inline std::int64_t OrderKey(double x)
+{
+  std::int64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return bits < 0 ? bits ^ std::numeric_limits<std::int64_t>::max() : bits;
+}
+
+/// The order in which a point's contributions are added: by exponent, then by value.
+inline bool FoldsBefore(const Contribution& a, const Contribution& b)
+{
+  if (a.E != b.E)
+  {
+    return a.E < b.E;
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    const std::int64_t ka = OrderKey(a.V[c]);
+    const std::int64_t kb = OrderKey(b.V[c]);
+    if (ka != kb)
+    {
+      return ka < kb;
+    }
+  }
+  return false;
+}
+
 /**
- * The points [First, First + Count) whose normals one task of the point pass computes, and their
- * sums. A face adds its contribution to the corners inside the range only.
+ * The points [First, First + Count) whose normals one task of the point pass computes. A face
+ * adds its contribution to the corners inside the range only: to their sums, in cell order, or,
+ * piece-invariant, to one list per point that NormalizeSums then adds in a fixed order.
  */
 struct PointRange
 {
   vtkIdType First = 0;
   vtkIdType Count = 0;
-  ScaledSum* Sums = nullptr;
+  ScaledSum* Sums = nullptr;                   // in cell order, or
+  std::int32_t* Heads = nullptr;               // the first contribution of each point's list
+  std::vector<Contribution>* Items = nullptr;  // the contributions
 
-  ScaledSum* Find(vtkIdType id) const
+  bool Contains(vtkIdType id) const
   {
     const auto i = static_cast<std::make_unsigned_t<vtkIdType>>(id - this->First);
-    return i < static_cast<std::make_unsigned_t<vtkIdType>>(this->Count) ? this->Sums + i : nullptr;
+    return i < static_cast<std::make_unsigned_t<vtkIdType>>(this->Count);
+  }
+
+  void Add(vtkIdType id, const double v[3], int e) const
+  {
+    if (this->Sums)
+    {
+      this->Sums[id - this->First].Add(v, e);
+      return;
+    }
+    std::int32_t& head = this->Heads[id - this->First];
+    this->Items->push_back(Contribution{ { v[0], v[1], v[2] }, e, head });
+    head = static_cast<std::int32_t>(this->Items->size() - 1);
   }
 };
 
@@ -397,9 +451,9 @@ void ScatterFace(int weighting, const T* pts, const VertexIdFn& vertexId, std::i
     const int exponent = area ? r.Exponent : 0;
     for (std::int64_t i = 0; i < n; ++i)
     {
-      if (ScaledSum* sum = range.Find(vertexId(i)))
+      if (range.Contains(vertexId(i)))
       {
-        sum->Add(face, exponent);
+        range.Add(vertexId(i), face, exponent);
       }
     }
     return;
@@ -409,8 +463,7 @@ void ScatterFace(int weighting, const T* pts, const VertexIdFn& vertexId, std::i
   const double* face = r.Normal;
   for (std::int64_t i = 0; i < n; ++i)
   {
-    ScaledSum* sum = range.Find(vertexId(i));
-    if (!sum)
+    if (!range.Contains(vertexId(i)))
     {
       continue;
     }
@@ -430,7 +483,7 @@ void ScatterFace(int weighting, const T* pts, const VertexIdFn& vertexId, std::i
       const double cosine = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
       const double angle = std::atan2(sine, cosine);
       const double weighted[3] = { angle * face[0], angle * face[1], angle * face[2] };
-      sum->Add(weighted, 0);
+      range.Add(vertexId(i), weighted, 0);
     }
     else
     {
@@ -440,29 +493,71 @@ void ScatterFace(int weighting, const T* pts, const VertexIdFn& vertexId, std::i
       const double bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
       const double inv = 1.0 / (aa * bb);
       const double weighted[3] = { x[0] * inv, x[1] * inv, x[2] * inv };
-      sum->Add(weighted, -(ka + kb));
+      range.Add(vertexId(i), weighted, -(ka + kb));
     }
   }
 }
 
-/// The unit normals of a range's sums (zero for a zero or non-finite sum).
+/// The unit normal of a sum (zero for a zero or non-finite sum).
+template <class O>
+void WriteNormal(const ScaledSum& sum, O* normal)
+{
+  double unit[3] = { 0.0, 0.0, 0.0 };
+  double length;
+  int k;
+  const double* s = sum.S;
+  if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]))
+  {
+    phongvtk::detail::NormalizeDouble(s, unit, length, k);
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    normal[c] = static_cast<O>(unit[c]);
+  }
+}
+
+/**
+ * The unit normals of a range's points. Piece-invariant, each point's contributions are added
+ * in the order FoldsBefore, a function of their values alone: the sum is the same whatever the
+ * order of the cells or their partition among processes.
+ */
 template <class O>
 void NormalizeSums(const PointRange& range, O* normals)
 {
+  if (range.Sums)
+  {
+    for (vtkIdType i = 0; i < range.Count; ++i)
+    {
+      WriteNormal(range.Sums[i], normals + 3 * (range.First + i));
+    }
+    return;
+  }
+  const std::vector<Contribution>& items = *range.Items;
+  std::vector<const Contribution*> star;
   for (vtkIdType i = 0; i < range.Count; ++i)
   {
-    double unit[3] = { 0.0, 0.0, 0.0 };
-    double length;
-    int k;
-    const double* s = range.Sums[i].S;
-    if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]))
+    star.clear();
+    for (std::int32_t k = range.Heads[i]; k >= 0; k = items[static_cast<std::size_t>(k)].Next)
     {
-      phongvtk::detail::NormalizeDouble(s, unit, length, k);
+      star.push_back(&items[static_cast<std::size_t>(k)]);
     }
-    for (int c = 0; c < 3; ++c)
+    // A handful of faces meet at a point: insertion sort.
+    for (std::size_t j = 1; j < star.size(); ++j)
     {
-      normals[3 * (range.First + i) + c] = static_cast<O>(unit[c]);
+      const Contribution* c = star[j];
+      std::size_t k = j;
+      for (; k > 0 && FoldsBefore(*c, *star[k - 1]); --k)
+      {
+        star[k] = star[k - 1];
+      }
+      star[k] = c;
     }
+    ScaledSum sum;
+    for (const Contribution* c : star)
+    {
+      sum.Add(c->V, c->E);
+    }
+    WriteNormal(sum, normals + 3 * (range.First + i));
   }
 }
 
@@ -488,6 +583,7 @@ public:
   int AccuracyMode;
   int Weighting;
   bool PointNormals;
+  bool PieceInvariant;
   CellOutputs<O> Out;
   vtkIdType NonFinite = 0;
   vtkIdType FirstBadCell = -1;
@@ -673,10 +769,12 @@ private:
 
   /**
    * Point normals, in parallel and bitwise the same for any number of threads. The points are
-   * split into ranges, one task each; a task visits, in cell order, every block of polygons
-   * that uses one of its points, recomputes those faces and adds their contributions to its own
-   * points only. Every point's sum is then the same fold over its faces in cell order however
-   * the points are split, and no per-face buffer makes a round trip through memory. Blocks record
+   * split into ranges, one task each; a task visits every block of polygons that uses one of its
+   * points, recomputes those faces and adds their contributions to its own points only: in cell
+   * order, or, piece-invariant, in an order set by their values (NormalizeSums). A point's normal
+   * is therefore the same however the points are split (and, piece-invariant, however the cells
+   * are ordered or the mesh is partitioned among processes), and no per-face buffer makes a
+   * round trip through memory. Blocks record
    * the span of point ids they use, so on a coherent mesh a task visits only the blocks around
    * its range; on an incoherent one the ranges grow until the repeated face work stays bounded.
    */
@@ -713,19 +811,35 @@ private:
     const vtkIdType numRanges = (this->NumberOfPoints + rangeSize - 1) / rangeSize;
     this->Filter->UpdateProgress(0.6);
 
-    vtkSMPThreadLocal<std::vector<ScaledSum>> localSums;
+    struct Buffers
+    {
+      std::vector<ScaledSum> Sums;
+      std::vector<std::int32_t> Heads;
+      std::vector<Contribution> Items;
+    };
+    vtkSMPThreadLocal<Buffers> localBuffers;
     vtkCellArray* strips = this->Input->GetStrips();
     vtkSMPTools::For(0, numRanges, 1,
       [&](vtkIdType begin, vtkIdType end)
       {
-        std::vector<ScaledSum>& sums = localSums.Local();
+        Buffers& buffers = localBuffers.Local();
         for (vtkIdType r = begin; r < end && !this->Filter->GetAbortExecute(); ++r)
         {
           PointRange range;
           range.First = r * rangeSize;
           range.Count = std::min(rangeSize, this->NumberOfPoints - range.First);
-          sums.assign(static_cast<std::size_t>(range.Count), ScaledSum());
-          range.Sums = sums.data();
+          if (this->PieceInvariant)
+          {
+            buffers.Heads.assign(static_cast<std::size_t>(range.Count), -1);
+            buffers.Items.clear();
+            range.Heads = buffers.Heads.data();
+            range.Items = &buffers.Items;
+          }
+          else
+          {
+            buffers.Sums.assign(static_cast<std::size_t>(range.Count), ScaledSum());
+            range.Sums = buffers.Sums.data();
+          }
           if (numPolys > 0)
           {
             polys->Visit(RawCells{},
@@ -847,7 +961,7 @@ private:
           {
             const vtkIdType tri[3] = { static_cast<vtkIdType>(ids[j + (j & 1)]),
               static_cast<vtkIdType>(ids[j + 1 - (j & 1)]), static_cast<vtkIdType>(ids[j + 2]) };
-            if (!range.Find(tri[0]) && !range.Find(tri[1]) && !range.Find(tri[2]))
+            if (!range.Contains(tri[0]) && !range.Contains(tri[1]) && !range.Contains(tri[2]))
             {
               continue;
             }
@@ -887,32 +1001,49 @@ vtkPolygonNormals::~vtkPolygonNormals() = default;
 //------------------------------------------------------------------------------
 const char* vtkPolygonNormals::GetAccuracyAsString()
 {
-  switch (this->Accuracy)
-  {
-    case FAST:
-      return "FAST";
-    case COMPENSATED:
-      return "COMPENSATED";
-    case EXACT:
-      return "EXACT";
-    default:
-      return "DOUBLE";
-  }
+  return phongvtk::AccuracyNames[this->Accuracy];
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+constexpr const char* const WeightingNames[] = { "AREA", "ANGLE", "UNIFORM", "MAX" };
+constexpr const char* const PrecisionNames[] = { "SINGLE_PRECISION", "DOUBLE_PRECISION",
+  "DEFAULT_PRECISION" };
 }
 
 //------------------------------------------------------------------------------
 const char* vtkPolygonNormals::GetPointWeightingAsString()
 {
-  switch (this->PointWeighting)
+  return WeightingNames[this->PointWeighting];
+}
+
+//------------------------------------------------------------------------------
+void vtkPolygonNormals::SetAccuracy(int mode)
+{
+  if (phongvtk::SetEnumeratedOption(this, "accuracy", this->Accuracy, mode, phongvtk::AccuracyNames))
   {
-    case ANGLE:
-      return "ANGLE";
-    case UNIFORM:
-      return "UNIFORM";
-    case MAX:
-      return "MAX";
-    default:
-      return "AREA";
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPolygonNormals::SetPointWeighting(int weighting)
+{
+  if (phongvtk::SetEnumeratedOption(
+        this, "point weighting", this->PointWeighting, weighting, WeightingNames))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPolygonNormals::SetOutputPrecision(int precision)
+{
+  if (phongvtk::SetEnumeratedOption(
+        this, "output precision", this->OutputPrecision, precision, PrecisionNames))
+  {
+    this->Modified();
   }
 }
 
@@ -932,6 +1063,7 @@ bool Dispatch(vtkPolygonNormals* self, vtkPolyData* input, vtkPolyData* output, 
   run.NumberOfPoints = numPoints;
   run.AccuracyMode = self->GetAccuracy();
   run.Weighting = self->GetPointWeighting();
+  run.PieceInvariant = self->GetPieceInvariant();
   run.PointNormals = self->GetComputePointNormals();
 
   vtkSmartPointer<vtkDataArray> normals, areaVectors, areas, pointNormals;
@@ -1000,6 +1132,36 @@ bool Dispatch(vtkPolygonNormals* self, vtkPolyData* input, vtkPolyData* output, 
 } // namespace
 
 //------------------------------------------------------------------------------
+namespace
+{
+/// Whether the filter asks upstream for one more level of ghost cells than downstream asked for:
+/// when it computes point normals of one piece among several (the faces across the piece's
+/// boundary belong to the boundary points' normals).
+bool WantsExtraGhostLevel(vtkPolygonNormals* self, vtkInformation* outInfo)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  return self->GetComputePointNormals() && self->GetPieceInvariant() &&
+    outInfo->Has(SDDP::UPDATE_NUMBER_OF_PIECES()) &&
+    outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES()) > 1;
+}
+}
+
+//------------------------------------------------------------------------------
+int vtkPolygonNormals::RequestUpdateExtent(vtkInformation* vtkNotUsed(request),
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  using SDDP = vtkStreamingDemandDrivenPipeline;
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const int ghostLevels = outInfo->Get(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS());
+  inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), outInfo->Get(SDDP::UPDATE_PIECE_NUMBER()));
+  inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), outInfo->Get(SDDP::UPDATE_NUMBER_OF_PIECES()));
+  inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(),
+    ghostLevels + (WantsExtraGhostLevel(this, outInfo) ? 1 : 0));
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -1061,6 +1223,15 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
                     << " cell(s) have non-finite (NaN or Inf) point coordinates; they are flagged "
                        "with NormalStatus 2 and get a zero normal.");
   }
+  // The ghost cells asked for on downstream's behalf go again; with ghost levels requested
+  // downstream the extra (outermost) layer stays, marked as ghosts like the others.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  if (WantsExtraGhostLevel(this, outInfo) &&
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) == 0 &&
+    output->GetCellGhostArray())
+  {
+    output->RemoveGhostCells();
+  }
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -1076,5 +1247,6 @@ void vtkPolygonNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ComputeAreaVectors: " << (this->ComputeAreaVectors ? "On" : "Off") << "\n";
   os << indent << "ComputeAreas: " << (this->ComputeAreas ? "On" : "Off") << "\n";
   os << indent << "ComputeNormalStatus: " << (this->ComputeNormalStatus ? "On" : "Off") << "\n";
-  os << indent << "OutputPrecision: " << this->OutputPrecision << "\n";
+  os << indent << "PieceInvariant: " << (this->PieceInvariant ? "On" : "Off") << "\n";
+  os << indent << "OutputPrecision: " << PrecisionNames[this->OutputPrecision] << "\n";
 }

@@ -34,7 +34,8 @@
  *
  * Everything the filter does not compute passes through: points, all cells, every other point,
  * cell and field array. Work is split with vtkSMPTools and the output is bitwise identical for
- * every thread count and SMP backend.
+ * every thread count and SMP backend. With PieceInvariant (default) a point normal does not
+ * depend on the order of the cells nor on the partition of the mesh among processes either.
  *
  * @sa vtkPolyDataNormals vtkTriangleMeshPointNormals vtkPolygon
  */
@@ -72,8 +73,9 @@ public:
   ///@{
   /**
    * Arithmetic of the area vectors: FAST, DOUBLE, COMPENSATED or EXACT. Default is DOUBLE.
+   * Another value is an error and leaves the mode unchanged.
    */
-  vtkSetClampMacro(Accuracy, int, FAST, EXACT);
+  virtual void SetAccuracy(int mode);
   vtkGetMacro(Accuracy, int);
   void SetAccuracyToFast() { this->SetAccuracy(FAST); }
   void SetAccuracyToDouble() { this->SetAccuracy(DOUBLE); }
@@ -85,8 +87,9 @@ public:
   ///@{
   /**
    * Weighting of the face normals around a point: AREA, ANGLE, UNIFORM or MAX. Default is AREA.
+   * Another value is an error and leaves the weighting unchanged.
    */
-  vtkSetClampMacro(PointWeighting, int, AREA, MAX);
+  virtual void SetPointWeighting(int weighting);
   vtkGetMacro(PointWeighting, int);
   void SetPointWeightingToArea() { this->SetPointWeighting(AREA); }
   void SetPointWeightingToAngle() { this->SetPointWeighting(ANGLE); }
@@ -144,10 +147,26 @@ public:
 
   ///@{
   /**
-   * Precision of the output arrays: vtkAlgorithm::SINGLE_PRECISION (default, VTK's convention
-   * for normals), DOUBLE_PRECISION, or DEFAULT_PRECISION (that of the input points).
+   * Point normals independent of the order of the cells and of the partition of the mesh into
+   * pieces. Default is on. A point adds its faces' contributions in an order set by their values
+   * instead of in cell order (measured: the point pass takes twice as long), and, computing one
+   * piece of several (ParaView's pvbatch/pvserver), the filter asks upstream for one more level
+   * of ghost cells: the points on the boundaries between pieces then get exactly, bit for bit,
+   * the normals of the whole mesh. Ghost cells asked for only for this are removed from the
+   * output again. Off: faces in cell order, no extra ghost cells.
    */
-  vtkSetClampMacro(OutputPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  vtkSetMacro(PieceInvariant, bool);
+  vtkGetMacro(PieceInvariant, bool);
+  vtkBooleanMacro(PieceInvariant, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Precision of the output arrays: vtkAlgorithm::SINGLE_PRECISION (default, VTK's convention
+   * for normals), DOUBLE_PRECISION, or DEFAULT_PRECISION (that of the input points). Another
+   * value is an error and leaves the precision unchanged.
+   */
+  virtual void SetOutputPrecision(int precision);
   vtkGetMacro(OutputPrecision, int);
   ///@}
 
@@ -155,6 +174,8 @@ protected:
   vtkPolygonNormals();
   ~vtkPolygonNormals() override;
 
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
@@ -165,6 +186,7 @@ protected:
   bool ComputeAreaVectors = false;
   bool ComputeAreas = false;
   bool ComputeNormalStatus = false;
+  bool PieceInvariant = true;
   int OutputPrecision = SINGLE_PRECISION;
 
 private:

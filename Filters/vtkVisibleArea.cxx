@@ -2,6 +2,7 @@
 
 #include "PhongVTKAreaVector.h"
 #include "PhongVTKCells.h"
+#include "PhongVTKOptions.h"
 #include "PhongVTKVisibleArea.h"
 
 #include "vtkCamera.h"
@@ -335,16 +336,15 @@ vtkVisibleArea::~vtkVisibleArea()
 //------------------------------------------------------------------------------
 const char* vtkVisibleArea::GetAccuracyAsString()
 {
-  switch (this->Accuracy)
+  return phongvtk::AccuracyNames[this->Accuracy];
+}
+
+//------------------------------------------------------------------------------
+void vtkVisibleArea::SetAccuracy(int mode)
+{
+  if (phongvtk::SetEnumeratedOption(this, "accuracy", this->Accuracy, mode, phongvtk::AccuracyNames))
   {
-    case FAST:
-      return "FAST";
-    case COMPENSATED:
-      return "COMPENSATED";
-    case EXACT:
-      return "EXACT";
-    default:
-      return "DOUBLE";
+    this->Modified();
   }
 }
 

@@ -85,7 +85,7 @@ public:
   /**
    * Arithmetic: FAST, DOUBLE, COMPENSATED or EXACT. Default is DOUBLE.
    */
-  vtkSetClampMacro(Accuracy, int, FAST, EXACT);
+  virtual void SetAccuracy(int mode);
   vtkGetMacro(Accuracy, int);
   void SetAccuracyToFast() { this->SetAccuracy(FAST); }
   void SetAccuracyToDouble() { this->SetAccuracy(DOUBLE); }

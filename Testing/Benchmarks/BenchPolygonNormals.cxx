@@ -84,12 +84,14 @@ void TriangleMeshPointNormals(benchmark::State& state, vtkPolyData* input)
   RunFilter(state, f, input);
 }
 
-void PolygonNormals(benchmark::State& state, vtkPolyData* input, int accuracy, bool points)
+void PolygonNormals(benchmark::State& state, vtkPolyData* input, int accuracy, bool points,
+  bool pieceInvariant = true)
 {
   vtkNew<vtkPolygonNormals> f;
   f->SetAccuracy(accuracy);
   f->SetComputeCellNormals(!points);
   f->SetComputePointNormals(points);
+  f->SetPieceInvariant(pieceInvariant);
   RunFilter(state, f, input);
 }
 
@@ -222,6 +224,8 @@ int main(int argc, char** argv)
         [data, mode](benchmark::State& s) { PolygonNormals(s, data, mode, false); });
       reg(std::string("PolygonNormals.Points.") + ModeName(mode),
         [data, mode](benchmark::State& s) { PolygonNormals(s, data, mode, true); });
+      reg(std::string("PolygonNormals.PointsInCellOrder.") + ModeName(mode),
+        [data, mode](benchmark::State& s) { PolygonNormals(s, data, mode, true, false); });
       reg(std::string("VisibleArea.Direction.") + ModeName(mode),
         [data, mode](benchmark::State& s) { VisibleArea(s, data, mode, false, false); });
       reg(std::string("VisibleArea.Camera.") + ModeName(mode),
@@ -255,19 +259,22 @@ int main(int argc, char** argv)
                 "vtkTriangleMeshPointNormals %.1f ms; memory floor %.2f ms\n",
       mesh.Name.c_str(), static_cast<long long>(mesh.Data->GetNumberOfCells()), 1e3 * cellsAnchor,
       1e3 * pointsAnchor, 1e3 * triangleAnchor, 1e3 * floor);
-    std::printf("%-12s %10s %12s %10s | %10s %12s %14s\n", "mode", "cells ms", "vs PDN cells",
-      "x floor", "points ms", "vs PDN points", "vs TriMeshPN");
+    std::printf("%-12s %10s %12s %10s | %10s %12s %14s | %14s %12s\n", "mode", "cells ms",
+      "vs PDN cells", "x floor", "points ms", "vs PDN points", "vs TriMeshPN", "cell order ms",
+      "invariant x");
     for (int mode = vtkPolygonNormals::FAST; mode <= vtkPolygonNormals::EXACT; ++mode)
     {
       const double cells = seconds(m + "PolygonNormals.Cells." + ModeName(mode));
       const double points = seconds(m + "PolygonNormals.Points." + ModeName(mode));
-      if (cells <= 0 || points <= 0)
+      const double cellOrder = seconds(m + "PolygonNormals.PointsInCellOrder." + ModeName(mode));
+      if (cells <= 0 || points <= 0 || cellOrder <= 0)
       {
         continue;
       }
-      std::printf("%-12s %10.2f %11.1fx %9.2fx | %10.2f %12.1fx %13.1fx\n", ModeName(mode),
-        1e3 * cells, cellsAnchor / cells, floor > 0 ? cells / floor : 0.0, 1e3 * points,
-        pointsAnchor / points, triangleAnchor / points);
+      std::printf("%-12s %10.2f %11.1fx %9.2fx | %10.2f %12.1fx %13.1fx | %14.2f %11.2fx\n",
+        ModeName(mode), 1e3 * cells, cellsAnchor / cells, floor > 0 ? cells / floor : 0.0,
+        1e3 * points, pointsAnchor / points, triangleAnchor / points, 1e3 * cellOrder,
+        points / cellOrder);
     }
   }
   for (const Mesh& mesh : Meshes())

@@ -16,6 +16,7 @@
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -589,6 +590,7 @@ TEST(PolygonNormalsApi, Defaults)
   EXPECT_FALSE(f->GetComputeAreaVectors());
   EXPECT_FALSE(f->GetComputeAreas());
   EXPECT_FALSE(f->GetComputeNormalStatus());
+  EXPECT_TRUE(f->GetPieceInvariant());
   EXPECT_EQ(f->GetOutputPrecision(), vtkAlgorithm::SINGLE_PRECISION);
 }
 
@@ -638,21 +640,32 @@ TEST(PolygonNormalsApi, PointWeightingSettersAndNames)
   EXPECT_STREQ(f->GetPointWeightingAsString(), "AREA");
 }
 
-TEST(PolygonNormalsApi, OutOfRangeValuesAreClamped)
+TEST(PolygonNormalsApi, UnknownOptionValuesAreErrorsAndChangeNothing)
 {
   vtkNew<vtkPolygonNormals> f;
+  vtkNew<phongvtk_test::MessageObserver> messages;
+  messages->Watch(f);
+  f->SetAccuracyToCompensated();
+  f->SetPointWeightingToMax();
+  f->SetOutputPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  const vtkMTimeType before = f->GetMTime();
   f->SetAccuracy(-4);
-  EXPECT_EQ(f->GetAccuracy(), vtkPolygonNormals::FAST);
   f->SetAccuracy(99);
-  EXPECT_EQ(f->GetAccuracy(), vtkPolygonNormals::EXACT);
   f->SetPointWeighting(-1);
-  EXPECT_EQ(f->GetPointWeighting(), vtkPolygonNormals::AREA);
   f->SetPointWeighting(4);
-  EXPECT_EQ(f->GetPointWeighting(), vtkPolygonNormals::MAX);
   f->SetOutputPrecision(-3);
-  EXPECT_EQ(f->GetOutputPrecision(), vtkAlgorithm::SINGLE_PRECISION);
   f->SetOutputPrecision(7);
-  EXPECT_EQ(f->GetOutputPrecision(), vtkAlgorithm::DEFAULT_PRECISION);
+  EXPECT_EQ(f->GetAccuracy(), vtkPolygonNormals::COMPENSATED);
+  EXPECT_EQ(f->GetPointWeighting(), vtkPolygonNormals::MAX);
+  EXPECT_EQ(f->GetOutputPrecision(), vtkAlgorithm::DOUBLE_PRECISION);
+  EXPECT_EQ(f->GetMTime(), before);
+  ASSERT_EQ(messages->Errors.size(), 6u);
+  EXPECT_NE(messages->Errors[1].find("Unknown accuracy 99: expected FAST (0), DOUBLE (1), "
+                                     "COMPENSATED (2) or EXACT (3); keeping COMPENSATED."),
+    std::string::npos)
+    << messages->Errors[1];
+  EXPECT_NE(messages->Errors[2].find("Unknown point weighting -1"), std::string::npos);
+  EXPECT_NE(messages->Errors[5].find("Unknown output precision 7"), std::string::npos);
 }
 
 TEST(PolygonNormalsApi, BooleanMacrosSwitchEachOutput)
@@ -2021,6 +2034,186 @@ TEST(PolygonNormalsThreads, PointNormalsDoNotDependOnThePointOrder)
   }
   vtkSMPTools::SetBackend(original.c_str());
   vtkSMPTools::Initialize(0);
+}
+
+namespace
+{
+/// The mesh made of `cells` (ids into `mesh`'s polygons, in that order), points numbered in
+/// order of first use; `oldPointId` receives each new point's id in `mesh`.
+vtkSmartPointer<vtkPolyData> CellSubset(
+  vtkPolyData* mesh, const std::vector<vtkIdType>& cells, std::vector<vtkIdType>& oldPointId)
+{
+  std::vector<vtkIdType> newId(static_cast<std::size_t>(mesh->GetNumberOfPoints()), -1);
+  oldPointId.clear();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType cell : cells)
+  {
+    mesh->GetPolys()->GetCellAtId(cell, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      vtkIdType& id = newId[static_cast<std::size_t>(ids->GetId(k))];
+      if (id < 0)
+      {
+        id = points->InsertNextPoint(mesh->GetPoint(ids->GetId(k)));
+        oldPointId.push_back(ids->GetId(k));
+      }
+      ids->SetId(k, id);
+    }
+    polys->InsertNextCell(ids);
+  }
+  auto subset = vtkSmartPointer<vtkPolyData>::New();
+  subset->SetPoints(points);
+  subset->SetPolys(polys);
+  return subset;
+}
+
+/// Counts the points of `part` whose normal differs in any bit from that of `oldPointId[p]` in
+/// `whole`; `owned(p)` selects the points compared.
+template <class Owned>
+int CountDifferentNormals(vtkPolyData* whole, vtkPolyData* part,
+  const std::vector<vtkIdType>& oldPointId, const Owned& owned, const std::string& what)
+{
+  vtkDataArray* expected = whole->GetPointData()->GetNormals();
+  vtkDataArray* actual = part->GetPointData()->GetNormals();
+  int mismatches = 0;
+  for (vtkIdType p = 0; p < part->GetNumberOfPoints(); ++p)
+  {
+    if (!owned(p))
+    {
+      continue;
+    }
+    const auto a = Tuple3(expected, oldPointId[static_cast<std::size_t>(p)]);
+    const auto b = Tuple3(actual, p);
+    if (std::memcmp(a.data(), b.data(), sizeof(a)) != 0 && ++mismatches <= 3)
+    {
+      ADD_FAILURE() << what << ": point " << oldPointId[static_cast<std::size_t>(p)] << " ("
+                    << a[0] << ", " << a[1] << ", " << a[2] << ") became (" << b[0] << ", "
+                    << b[1] << ", " << b[2] << ")";
+    }
+  }
+  return mismatches;
+}
+} // namespace
+
+TEST(PolygonNormalsPointNormals, DoNotDependOnTheCellOrder)
+{
+  // A point adds its faces' contributions in an order set by their values: shuffling the cells
+  // changes no bit of any point normal, in any mode and weighting. (Rounding makes a sum in
+  // another order differ in the last bits on such a mesh: the test would see it.)
+  auto mesh = JitteredSphere(120, 1e-3);
+  std::vector<vtkIdType> order(static_cast<std::size_t>(mesh->GetNumberOfPolys()));
+  std::iota(order.begin(), order.end(), 0);
+  std::shuffle(order.begin(), order.end(), std::mt19937_64(11));
+  std::vector<vtkIdType> oldPointId;
+  auto shuffled = CellSubset(mesh, order, oldPointId);
+  for (int mode : Modes)
+  {
+    for (int weighting : Weightings)
+    {
+      auto configure = [mode, weighting](vtkPolygonNormals* f)
+      {
+        f->SetAccuracy(mode);
+        f->SetPointWeighting(weighting);
+        f->ComputePointNormalsOn();
+        f->SetOutputPrecision(vtkAlgorithm::DOUBLE_PRECISION); // float would hide the last bits
+      };
+      auto whole = RunFilter(mesh, configure);
+      auto reordered = RunFilter(shuffled, configure);
+      const std::string what = std::string(ModeName(mode)) + " " + WeightingName(weighting);
+      EXPECT_EQ(CountDifferentNormals(
+                  whole, reordered, oldPointId, [](vtkIdType) { return true; }, what),
+        0)
+        << what;
+    }
+  }
+}
+
+TEST(PolygonNormalsPointNormals, PiecesWithOneGhostLayerGiveTheWholeMeshNormals)
+{
+  // A distributed pipeline hands each process a piece: its own cells, then the ghost cells
+  // around them (every cell sharing a point with the piece). The points of the piece's own
+  // cells, boundary points included, get the whole mesh's normals bit for bit.
+  auto mesh = JitteredSphere(90, 1e-3, 3);
+  const vtkIdType numCells = mesh->GetNumberOfPolys();
+  vtkNew<vtkIdList> ids;
+  for (int pieces : { 2, 3 })
+  {
+    for (int piece = 0; piece < pieces; ++piece)
+    {
+      // Pieces by the sign pattern of the centre's coordinates, so that their boundaries wind
+      // through the mesh rather than follow the cell order.
+      std::vector<char> own(static_cast<std::size_t>(numCells), 0);
+      std::vector<char> ownPoint(static_cast<std::size_t>(mesh->GetNumberOfPoints()), 0);
+      std::vector<vtkIdType> cells;
+      for (vtkIdType c = 0; c < numCells; ++c)
+      {
+        mesh->GetPolys()->GetCellAtId(c, ids);
+        double centre[3] = { 0.0, 0.0, 0.0 };
+        for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+        {
+          const double* x = mesh->GetPoint(ids->GetId(k));
+          for (int j = 0; j < 3; ++j)
+          {
+            centre[j] += x[j];
+          }
+        }
+        const double angle = std::atan2(centre[1], centre[0]) + std::sin(7.0 * centre[2]);
+        const int owner = static_cast<int>(std::floor((angle + 2.0 * vtkMath::Pi()) /
+                            (2.0 * vtkMath::Pi() / pieces))) %
+          pieces;
+        if (owner == piece)
+        {
+          own[static_cast<std::size_t>(c)] = 1;
+          cells.push_back(c);
+          for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+          {
+            ownPoint[static_cast<std::size_t>(ids->GetId(k))] = 1;
+          }
+        }
+      }
+      for (vtkIdType c = numCells - 1; c >= 0; --c) // ghosts, in another order than the mesh's
+      {
+        mesh->GetPolys()->GetCellAtId(c, ids);
+        bool touches = false;
+        for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+        {
+          touches = touches || ownPoint[static_cast<std::size_t>(ids->GetId(k))];
+        }
+        if (touches && !own[static_cast<std::size_t>(c)])
+        {
+          cells.push_back(c);
+        }
+      }
+      std::vector<vtkIdType> oldPointId;
+      auto part = CellSubset(mesh, cells, oldPointId);
+      for (int mode : Modes)
+      {
+        for (int weighting : Weightings)
+        {
+          auto configure = [mode, weighting](vtkPolygonNormals* f)
+          {
+            f->SetAccuracy(mode);
+            f->SetPointWeighting(weighting);
+            f->ComputePointNormalsOn();
+            f->SetOutputPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+          };
+          auto whole = RunFilter(mesh, configure);
+          auto computed = RunFilter(part, configure);
+          const std::string what = std::to_string(pieces) + " pieces, piece " +
+            std::to_string(piece) + ", " + ModeName(mode) + " " + WeightingName(weighting);
+          EXPECT_EQ(CountDifferentNormals(whole, computed, oldPointId,
+                      [&](vtkIdType p)
+                      { return ownPoint[static_cast<std::size_t>(oldPointId[p])] != 0; },
+                      what),
+            0)
+            << what;
+        }
+      }
+    }
+  }
 }
 
 //==============================================================================

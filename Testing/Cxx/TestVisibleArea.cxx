@@ -405,8 +405,12 @@ TEST(VisibleAreaApi, DefaultsAndNames)
     EXPECT_STREQ(f->GetAccuracyAsString(), names[mode]);
     EXPECT_EQ(mode, vtkPolygonNormals::FAST + mode); // numbered as vtkPolygonNormals'
   }
+  vtkNew<phongvtk_test::MessageObserver> messages;
+  messages->Watch(f);
   f->SetAccuracy(9);
-  EXPECT_EQ(f->GetAccuracy(), vtkVisibleArea::EXACT);
+  EXPECT_EQ(f->GetAccuracy(), vtkVisibleArea::EXACT); // the last mode set, kept
+  ASSERT_EQ(messages->Errors.size(), 1u);
+  EXPECT_NE(messages->Errors[0].find("Unknown accuracy 9"), std::string::npos);
 }
 
 TEST(VisibleAreaApi, CameraChangesReexecute)
