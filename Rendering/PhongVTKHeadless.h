@@ -65,6 +65,19 @@ VTKPHONGVTKRENDERING_EXPORT bool XDisplayAvailable();
 /// thread, so binding a context of another library needs this first.
 VTKPHONGVTKRENDERING_EXPORT void ReleaseThreadContext();
 
+/// Whether a PhongVTK headless context (OSMesa through PhongVTK, or EGL) is current on this thread.
+VTKPHONGVTKRENDERING_EXPORT bool HeadlessContextIsCurrent();
+
+/**
+ * Makes VTK's calls to glewInit() (vtkOpenGLRenderWindow::OpenGLInitContext) succeed when a
+ * headless context is current, so that windows of any class sharing a PhongVTK headless context
+ * (ParaView's per-view windows in pvbatch) initialise as they would on a GLX context. Debian's
+ * GLEW is a GLX build: with a non-GLX context current, glewInit() loads every entry point and
+ * then reports GLEW_ERROR_NO_GLX_DISPLAY. Done once per process, by rewriting the import slot of
+ * glewInit in VTK's OpenGL library; false, with the reason in `*problem`, when there is none.
+ */
+VTKPHONGVTKRENDERING_EXPORT bool RouteVTKGlewInit(std::string* problem);
+
 /// Emits `message` as a VTK warning the first time it is seen in this process.
 VTKPHONGVTKRENDERING_EXPORT void WarnOnce(const std::string& message);
 

@@ -10,10 +10,13 @@
 #include "vtkObjectFactory.h"
 #include "vtkOverrideInformation.h"
 #include "vtkOverrideInformationCollection.h"
+#include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
 #include "vtkVersionMacros.h"
 #include "vtkWeakPointer.h"
+
+#include <dlfcn.h>
 
 #include <mutex>
 #include <string>
@@ -58,6 +61,7 @@ vtkHeadlessRenderWindow* NewHeadless(Window kind)
 struct DeferredOverride
 {
   vtkWeakPointer<vtkObjectFactory> Factory;
+  std::string Class; // vtkRenderWindow or vtkRenderWindowInteractor
   std::string Subclass;
 };
 std::vector<DeferredOverride>& DeferredOverrides()
@@ -68,7 +72,7 @@ std::vector<DeferredOverride>& DeferredOverrides()
 thread_local bool CreatingVTKDefault = false;
 std::mutex DeferredMutex; // the enable flags are shared by every thread
 
-vtkObject* CreateVTKDefault()
+vtkObject* CreateVTKDefault(const std::string& className)
 {
   if (CreatingVTKDefault)
   {
@@ -76,18 +80,65 @@ vtkObject* CreateVTKDefault()
   }
   std::lock_guard<std::mutex> lock(DeferredMutex);
   CreatingVTKDefault = true;
-  vtkObject* window = nullptr;
+  vtkObject* object = nullptr;
   for (const DeferredOverride& d : DeferredOverrides())
   {
-    if (!window && d.Factory)
+    if (!object && d.Factory && d.Class == className)
     {
-      d.Factory->SetEnableFlag(1, "vtkRenderWindow", d.Subclass.c_str());
-      window = vtkObjectFactory::CreateInstance("vtkRenderWindow");
-      d.Factory->SetEnableFlag(0, "vtkRenderWindow", d.Subclass.c_str());
+      d.Factory->SetEnableFlag(1, className.c_str(), d.Subclass.c_str());
+      object = vtkObjectFactory::CreateInstance(className.c_str());
+      d.Factory->SetEnableFlag(0, className.c_str(), d.Subclass.c_str());
     }
   }
   CreatingVTKDefault = false;
-  return window;
+  return object;
+}
+
+/// The environment's choice, its warning said once.
+Window ChosenWindow()
+{
+  const phongvtk::headless::Choice choice = phongvtk::headless::ChooseWindowFromEnvironment();
+  if (!choice.Warning.empty())
+  {
+    phongvtk::headless::WarnOnce(choice.Warning);
+  }
+  return choice.Kind;
+}
+
+// The interactor of a headless window: VTK's base interactor, which needs no display and whose
+// event loop returns at once (there are no events to wait for). VTK's X interactor would
+// dereference a missing X display in Initialize() (ParaView's pvpython initialises one per view).
+class vtkHeadlessRenderWindowInteractor : public vtkRenderWindowInteractor
+{
+public:
+  static vtkHeadlessRenderWindowInteractor* New()
+  {
+    auto* interactor = new vtkHeadlessRenderWindowInteractor;
+    interactor->InitializeObjectBase();
+    return interactor;
+  }
+  vtkTypeMacro(vtkHeadlessRenderWindowInteractor, vtkRenderWindowInteractor);
+
+protected:
+  vtkHeadlessRenderWindowInteractor() = default;
+  ~vtkHeadlessRenderWindowInteractor() override = default;
+
+private:
+  vtkHeadlessRenderWindowInteractor(const vtkHeadlessRenderWindowInteractor&) = delete;
+  void operator=(const vtkHeadlessRenderWindowInteractor&) = delete;
+};
+
+vtkObject* CreateInteractor()
+{
+  if (CreatingVTKDefault)
+  {
+    return nullptr;
+  }
+  if (ChosenWindow() == Window::VTKDefault)
+  {
+    return CreateVTKDefault("vtkRenderWindowInteractor");
+  }
+  return vtkHeadlessRenderWindowInteractor::New();
 }
 
 // The override of vtkRenderWindow: a headless window when the environment asks for one, else
@@ -98,16 +149,12 @@ vtkObject* CreateRenderWindow()
   {
     return nullptr;
   }
-  const phongvtk::headless::Choice choice = phongvtk::headless::ChooseWindowFromEnvironment();
-  if (!choice.Warning.empty())
+  const Window kind = ChosenWindow();
+  if (kind == Window::VTKDefault)
   {
-    phongvtk::headless::WarnOnce(choice.Warning);
+    return CreateVTKDefault("vtkRenderWindow");
   }
-  if (choice.Kind == Window::VTKDefault)
-  {
-    return CreateVTKDefault();
-  }
-  return NewHeadless(choice.Kind);
+  return NewHeadless(kind);
 }
 
 class vtkHeadlessRenderWindowFactory : public vtkObjectFactory
@@ -131,6 +178,8 @@ protected:
   {
     this->RegisterOverride("vtkRenderWindow", "vtkHeadlessRenderWindow",
       "headless render window (PHONGVTK_HEADLESS=auto|osmesa|egl|off)", 1, &CreateRenderWindow);
+    this->RegisterOverride("vtkRenderWindowInteractor", "vtkHeadlessRenderWindowInteractor",
+      "display-free interactor of a headless render window", 1, &CreateInteractor);
   }
 
 private:
@@ -150,23 +199,34 @@ void InstallFactory()
     []
     {
       vtkObjectFactory::GetRegisteredFactories(); // creates the registry if needed
-      vtkNew<vtkOverrideInformationCollection> overrides;
-      vtkObjectFactory::GetOverrideInformation("vtkRenderWindow", overrides);
-      vtkCollectionSimpleIterator it;
-      overrides->InitTraversal(it);
-      while (vtkOverrideInformation* info = overrides->GetNextOverrideInformation(it))
+      for (const char* className : { "vtkRenderWindow", "vtkRenderWindowInteractor" })
       {
-        vtkObjectFactory* factory = info->GetObjectFactory();
-        const char* subclass = info->GetClassOverrideWithName();
-        if (factory && subclass && factory->GetEnableFlag("vtkRenderWindow", subclass))
+        vtkNew<vtkOverrideInformationCollection> overrides;
+        vtkObjectFactory::GetOverrideInformation(className, overrides);
+        vtkCollectionSimpleIterator it;
+        overrides->InitTraversal(it);
+        while (vtkOverrideInformation* info = overrides->GetNextOverrideInformation(it))
         {
-          factory->SetEnableFlag(0, "vtkRenderWindow", subclass);
-          DeferredOverrides().push_back({ factory, subclass });
+          vtkObjectFactory* factory = info->GetObjectFactory();
+          const char* subclass = info->GetClassOverrideWithName();
+          if (factory && subclass && factory->GetEnableFlag(className, subclass))
+          {
+            factory->SetEnableFlag(0, className, subclass);
+            DeferredOverrides().push_back({ factory, className, subclass });
+          }
         }
       }
       vtkHeadlessRenderWindowFactory* factory = vtkHeadlessRenderWindowFactory::New();
       vtkObjectFactory::RegisterFactory(factory);
       factory->Delete();
+      // The registry now holds an object of this library: the library must stay loaded. Plugin
+      // loaders dlopen and dlclose libraries freely (ParaView's tries every library in
+      // PV_PLUGIN_PATH, plugin or not), which would leave the registry with a dangling factory.
+      Dl_info self;
+      if (dladdr(reinterpret_cast<void*>(&InstallFactory), &self) && self.dli_fname)
+      {
+        dlopen(self.dli_fname, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE); // never closed
+      }
     });
 }
 
@@ -266,6 +326,13 @@ void vtkHeadlessRenderWindow::Initialize()
       return;
     }
     this->RebindPending = true;
+    // Windows of other classes may share this context (ParaView's per-view windows do).
+    std::string routeProblem;
+    if (!phongvtk::headless::RouteVTKGlewInit(&routeProblem))
+    {
+      phongvtk::headless::WarnOnce("Windows sharing a headless context will report GLEW errors: " +
+        routeProblem);
+    }
   }
   if (!this->Initialized)
   {
