@@ -33,9 +33,9 @@ bool SetEnumeratedOption(
     {
       accepted << (i == 0 ? "" : (i + 1 == N ? " or " : ", ")) << names[i] << " (" << i << ")";
     }
-    vtkErrorWithObjectMacro(self, "Unknown " << option << " " << value << ": expected "
-                                             << accepted.str() << "; keeping " << names[member]
-                                             << ".");
+    vtkErrorWithObjectMacro(self,
+      "Unknown " << option << " " << value << ": expected " << accepted.str() << "; keeping "
+                 << names[member] << ".");
     return false;
   }
   if (value == member)

@@ -408,9 +408,9 @@ struct PointRange
 {
   vtkIdType First = 0;
   vtkIdType Count = 0;
-  ScaledSum* Sums = nullptr;                   // in cell order, or
-  std::int32_t* Heads = nullptr;               // the first contribution of each point's list
-  std::vector<Contribution>* Items = nullptr;  // the contributions
+  ScaledSum* Sums = nullptr;                  // in cell order, or
+  std::int32_t* Heads = nullptr;              // the first contribution of each point's list
+  std::vector<Contribution>* Items = nullptr; // the contributions
 
   bool Contains(vtkIdType id) const
   {
@@ -1021,7 +1021,8 @@ const char* vtkPolygonNormals::GetPointWeightingAsString()
 //------------------------------------------------------------------------------
 void vtkPolygonNormals::SetAccuracy(int mode)
 {
-  if (phongvtk::SetEnumeratedOption(this, "accuracy", this->Accuracy, mode, phongvtk::AccuracyNames))
+  if (phongvtk::SetEnumeratedOption(
+        this, "accuracy", this->Accuracy, mode, phongvtk::AccuracyNames))
   {
     this->Modified();
   }

@@ -342,7 +342,8 @@ const char* vtkVisibleArea::GetAccuracyAsString()
 //------------------------------------------------------------------------------
 void vtkVisibleArea::SetAccuracy(int mode)
 {
-  if (phongvtk::SetEnumeratedOption(this, "accuracy", this->Accuracy, mode, phongvtk::AccuracyNames))
+  if (phongvtk::SetEnumeratedOption(
+        this, "accuracy", this->Accuracy, mode, phongvtk::AccuracyNames))
   {
     this->Modified();
   }

@@ -77,7 +77,7 @@ void PatchObject(const dl_phdr_info* info, Patch& patch)
   }
   const ElfW(Sym)* symbols = nullptr;
   const char* strings = nullptr;
-  const ElfW(Rela)* tables[2] = { nullptr, nullptr };
+  const ElfW(Rela) * tables[2] = { nullptr, nullptr };
   std::size_t sizes[2] = { 0, 0 };
   for (const ElfW(Dyn)* d = dynamic; d->d_tag != DT_NULL; ++d)
   {

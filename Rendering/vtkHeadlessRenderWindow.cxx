@@ -330,8 +330,8 @@ void vtkHeadlessRenderWindow::Initialize()
     std::string routeProblem;
     if (!phongvtk::headless::RouteVTKGlewInit(&routeProblem))
     {
-      phongvtk::headless::WarnOnce("Windows sharing a headless context will report GLEW errors: " +
-        routeProblem);
+      phongvtk::headless::WarnOnce(
+        "Windows sharing a headless context will report GLEW errors: " + routeProblem);
     }
   }
   if (!this->Initialized)

@@ -45,6 +45,8 @@ packages=(
   xvfb
   # exact arithmetic (EXACT fallback, test reference), tests, benchmarks
   libgmp-dev libgtest-dev libbenchmark-dev python3-pytest python3-numpy
+  # the plugin's distributed test (mpiexec pvbatch)
+  openmpi-bin
   # the command line's benchmark plots (python3 -m phongvtk bench)
   python3-matplotlib
   # real meshes nobody here wrote (CGAL's sample data)

@@ -18,8 +18,8 @@ void vtkPVVisibleArea::SetView(vtkObject* view)
   vtkPVRenderView* renderView = vtkPVRenderView::SafeDownCast(view);
   if (view && !renderView)
   {
-    vtkWarningMacro("A " << view->GetClassName()
-                         << " is not a render view: the view direction is used instead.");
+    vtkWarningMacro(
+      "A " << view->GetClassName() << " is not a render view: the view direction is used instead.");
   }
   this->SetCamera(renderView ? renderView->GetActiveCamera() : nullptr);
 }

@@ -2089,9 +2089,9 @@ int CountDifferentNormals(vtkPolyData* whole, vtkPolyData* part,
     const auto b = Tuple3(actual, p);
     if (std::memcmp(a.data(), b.data(), sizeof(a)) != 0 && ++mismatches <= 3)
     {
-      ADD_FAILURE() << what << ": point " << oldPointId[static_cast<std::size_t>(p)] << " ("
-                    << a[0] << ", " << a[1] << ", " << a[2] << ") became (" << b[0] << ", "
-                    << b[1] << ", " << b[2] << ")";
+      ADD_FAILURE() << what << ": point " << oldPointId[static_cast<std::size_t>(p)] << " (" << a[0]
+                    << ", " << a[1] << ", " << a[2] << ") became (" << b[0] << ", " << b[1] << ", "
+                    << b[2] << ")";
     }
   }
   return mismatches;
@@ -2161,8 +2161,8 @@ TEST(PolygonNormalsPointNormals, PiecesWithOneGhostLayerGiveTheWholeMeshNormals)
           }
         }
         const double angle = std::atan2(centre[1], centre[0]) + std::sin(7.0 * centre[2]);
-        const int owner = static_cast<int>(std::floor((angle + 2.0 * vtkMath::Pi()) /
-                            (2.0 * vtkMath::Pi() / pieces))) %
+        const int owner = static_cast<int>(std::floor(
+                            (angle + 2.0 * vtkMath::Pi()) / (2.0 * vtkMath::Pi() / pieces))) %
           pieces;
         if (owner == piece)
         {
@@ -2204,10 +2204,11 @@ TEST(PolygonNormalsPointNormals, PiecesWithOneGhostLayerGiveTheWholeMeshNormals)
           auto computed = RunFilter(part, configure);
           const std::string what = std::to_string(pieces) + " pieces, piece " +
             std::to_string(piece) + ", " + ModeName(mode) + " " + WeightingName(weighting);
-          EXPECT_EQ(CountDifferentNormals(whole, computed, oldPointId,
-                      [&](vtkIdType p)
-                      { return ownPoint[static_cast<std::size_t>(oldPointId[p])] != 0; },
-                      what),
+          EXPECT_EQ(
+            CountDifferentNormals(
+              whole, computed, oldPointId,
+              [&](vtkIdType p) { return ownPoint[static_cast<std::size_t>(oldPointId[p])] != 0; },
+              what),
             0)
             << what;
         }
