@@ -2070,6 +2070,18 @@ vtkSmartPointer<vtkPolyData> CellSubset(
   return subset;
 }
 
+/// Point normals of one mode and weighting, output in double: float would hide the last bits.
+std::function<void(vtkPolygonNormals*)> PointNormalsInDouble(int mode, int weighting)
+{
+  return [mode, weighting](vtkPolygonNormals* f)
+  {
+    f->SetAccuracy(mode);
+    f->SetPointWeighting(weighting);
+    f->ComputePointNormalsOn();
+    f->SetOutputPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  };
+}
+
 /// Counts the points of `part` whose normal differs in any bit from that of `oldPointId[p]` in
 /// `whole`; `owned(p)` selects the points compared.
 template <class Owned>
@@ -2113,13 +2125,7 @@ TEST(PolygonNormalsPointNormals, DoNotDependOnTheCellOrder)
   {
     for (int weighting : Weightings)
     {
-      auto configure = [mode, weighting](vtkPolygonNormals* f)
-      {
-        f->SetAccuracy(mode);
-        f->SetPointWeighting(weighting);
-        f->ComputePointNormalsOn();
-        f->SetOutputPrecision(vtkAlgorithm::DOUBLE_PRECISION); // float would hide the last bits
-      };
+      auto configure = PointNormalsInDouble(mode, weighting);
       auto whole = RunFilter(mesh, configure);
       auto reordered = RunFilter(shuffled, configure);
       const std::string what = std::string(ModeName(mode)) + " " + WeightingName(weighting);
@@ -2193,13 +2199,7 @@ TEST(PolygonNormalsPointNormals, PiecesWithOneGhostLayerGiveTheWholeMeshNormals)
       {
         for (int weighting : Weightings)
         {
-          auto configure = [mode, weighting](vtkPolygonNormals* f)
-          {
-            f->SetAccuracy(mode);
-            f->SetPointWeighting(weighting);
-            f->ComputePointNormalsOn();
-            f->SetOutputPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-          };
+          auto configure = PointNormalsInDouble(mode, weighting);
           auto whole = RunFilter(mesh, configure);
           auto computed = RunFilter(part, configure);
           const std::string what = std::to_string(pieces) + " pieces, piece " +
