@@ -8,13 +8,14 @@ strips). CGAL's bunny comes from Debian's libcgal-demo archive (:func:`cgal_mesh
 torus stands in when the archive is absent (:func:`default_mesh`).
 """
 
+import ctypes
 import os
 import tarfile
 import tempfile
 
 import numpy as np
 from vtkmodules.util import numpy_support
-from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonCore import vtkPoints, vtkVersion
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
@@ -91,10 +92,50 @@ def read_mesh(path, progress=None):
         reader = VTK_READERS[kind]()
         reader.SetFileName(path)
         what = f"cannot read '{path}' as {kind[1:].upper()}"
-        progress.run(reader, f"read {name}", what)
+        try:
+            progress.run(reader, f"read {name}", what)
+        except CommandError as error:
+            if kind == ".vtp":
+                explain_appended_data(path, error)
+            raise
         mesh = reader.GetOutput()
     check_surface(mesh, path)
     return mesh
+
+
+def expat_defers_reparsing():
+    """Whether the system's expat defers reparsing partial tokens (expat >= 2.6.0, or Debian
+    12's backport in 2.5.0-1+deb12u2 and later), which VTK before 9.3.1 cannot read appended
+    XML data with unless PhongVTK's module turned it off (see PhongVTKExpatDeferral.h)."""
+    try:
+        return hasattr(ctypes.CDLL("libexpat.so.1"), "XML_SetReparseDeferralEnabled")
+    except OSError:
+        return False
+
+
+def vtk_before(major, minor, build):
+    """Whether this VTK is older than major.minor.build."""
+    version = (vtkVersion.GetVTKMajorVersion(), vtkVersion.GetVTKMinorVersion(),
+               vtkVersion.GetVTKBuildVersion())
+    return version < (major, minor, build)
+
+
+def explain_appended_data(path, error):
+    """Raises a CommandError that says why when `path` (which VTK's reader failed on) holds XML
+    appended data that this VTK cannot parse with the system's expat; returns otherwise."""
+    with open(path, "rb") as file:
+        head = file.read(1 << 20)
+    if b"<AppendedData" not in head or not expat_defers_reparsing() or not vtk_before(9, 3, 1):
+        return
+    keep = os.environ.get("PHONGVTK_KEEP_EXPAT_DEFERRAL", "")
+    cause = ("PHONGVTK_KEEP_EXPAT_DEFERRAL is set, which leaves the system's expat as it is"
+             if keep and keep != "0" else "PhongVTK could not turn it off here")
+    raise CommandError(
+        f"{error}. '{path}' stores its data in VTK's appended mode, which VTK "
+        f"{vtkVersion.GetVTKVersion()} cannot read with the system's expat (it defers reparsing, "
+        f"VTK issue 19258) and {cause}; unset that variable, or write the file in VTK's inline "
+        "binary mode (vtkXMLWriter.SetDataModeToBinary(), ParaView: Data Mode 'Binary')"
+    ) from None
 
 
 def check_ply_header(path):
@@ -298,11 +339,37 @@ def read_off(path, progress=None):
 # --- writing --------------------------------------------------------------------------------
 
 
+def write_atomically(writer, path, progress):
+    """Runs the VTK `writer` into a temporary file beside `path`, then renames it to `path`: a
+    reader never sees half a file, and a failed write leaves an existing `path` as it was."""
+    directory = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(directory):
+        raise CommandError(f"cannot write '{path}': no such directory")
+    partial = os.path.join(directory, f".{os.path.basename(path)}.{os.getpid()}.part")
+    writer.SetFileName(partial)
+    try:
+        progress.run(writer, f"write {os.path.basename(path)}", f"cannot write '{path}'",
+                     "Write")
+        # Some writers (vtkPNGWriter) report a file they cannot open through the error code.
+        if (hasattr(writer, "GetErrorCode") and writer.GetErrorCode()) or \
+                not os.path.isfile(partial):
+            raise CommandError(f"cannot write '{path}'")
+        os.replace(partial, path)
+    except OSError as error:
+        raise CommandError(f"cannot write '{path}': {error.strerror}") from None
+    finally:
+        if os.path.exists(partial):
+            os.remove(partial)
+
+
 def write_mesh(mesh, path, progress=None):
-    """Writes the vtkPolyData `mesh` to `path`, the kind by extension (see MESH_WRITERS).
+    """Writes the vtkPolyData `mesh` to `path` atomically, the kind by extension (see
+    MESH_WRITERS).
 
     VTP and legacy VTK keep every array; PLY keeps the geometry (and what vtkPLYWriter writes of
-    point data); STL keeps only triangles (polygons and strips are triangulated).
+    point data); STL keeps only triangles (polygons and strips are triangulated). VTP is written
+    in inline binary mode, which every VTK and ParaView reads on every expat (appended mode, the
+    writer's default, is unreadable for VTK before 9.3.1 on expat >= 2.6 without PhongVTK).
     """
     progress = progress or Progress(quiet=True)
     check_output(path, MESH_WRITERS)
@@ -314,22 +381,19 @@ def write_mesh(mesh, path, progress=None):
         mesh = triangles.GetOutput()
     writer = MESH_WRITERS[kind]()
     writer.SetInputData(mesh)
-    writer.SetFileName(path)
-    progress.run(writer, f"write {os.path.basename(path)}", f"cannot write '{path}'", "Write")
+    if kind == ".vtp":
+        writer.SetDataModeToBinary()
+    write_atomically(writer, path, progress)
 
 
 def write_png(image, path, progress=None):
-    """Writes the vtkImageData `image` (RGB or RGBA, unsigned char) as a PNG file."""
+    """Writes the vtkImageData `image` (RGB or RGBA, unsigned char) as a PNG file, atomically."""
     progress = progress or Progress(quiet=True)
     check_output(path, [".png"])
     writer = vtkPNGWriter()
     writer.SetCompressionLevel(9)  # smallest files; images here are small, so it costs little
     writer.SetInputData(image)
-    writer.SetFileName(path)
-    progress.run(writer, f"write {os.path.basename(path)}", f"cannot write '{path}'", "Write")
-    # vtkPNGWriter reports a file it cannot open through its error code only.
-    if writer.GetErrorCode() or not os.path.isfile(path):
-        raise CommandError(f"cannot write '{path}'")
+    write_atomically(writer, path, progress)
 
 
 # --- data nobody here wrote -----------------------------------------------------------------

@@ -499,6 +499,77 @@ def test_malformed_off_is_a_clean_error(phongvtk_cli, tmp_path):
                        "vertex index 9")
 
 
+# --- VTP files on every expat -----------------------------------------------------------------
+# VTK before 9.3.1 reads no cells from XML appended data when the system's expat defers reparsing
+# (expat >= 2.6.0; Debian 12's libexpat1 2.5.0-1+deb12u2 and later). The CLI writes files every
+# VTK reads, and reads appended files with PhongVTK's fix (PhongVTKExpatDeferral.h) whatever the
+# machine's expat; these tests hold on either kind of expat, which they ask for themselves.
+
+EXPAT_DEFERS = phongvtk_io.expat_defers_reparsing() and phongvtk_io.vtk_before(9, 3, 1)
+
+PLAIN_VTK_READ = """
+import sys
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+reader = vtkXMLPolyDataReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+mesh = reader.GetOutput()
+print(mesh.GetNumberOfPoints(), mesh.GetNumberOfPolys(), mesh.GetCellData().GetNumberOfArrays())
+"""
+
+
+def read_with_plain_vtk(path):
+    """(points, polygons, cell arrays) of the VTP at `path` as a VTK program without PhongVTK
+    (and so without its fix) reads it, in a process of its own."""
+    result = subprocess.run([sys.executable, "-c", PLAIN_VTK_READ, str(path)], capture_output=True,
+                            text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
+    return tuple(int(word) for word in result.stdout.split())
+
+
+def write_appended_vtp(path, mesh):
+    """`mesh` in vtkXMLPolyDataWriter's default mode (appended raw data, compressed)."""
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(mesh)
+    writer.SetFileName(str(path))
+    assert writer.Write() == 1
+
+
+def test_normals_writes_vtp_that_vtk_without_phongvtk_reads(phongvtk_cli, sphere_off, tmp_path):
+    result = phongvtk_cli("normals", sphere_off, "-o", "out.vtp", "--areas")
+    assert result.returncode == 0, result.stderr
+    points, faces = uv_sphere()
+    assert read_with_plain_vtk(tmp_path / "out.vtp") == (len(points), len(faces), 2)
+    assert "<AppendedData" not in (tmp_path / "out.vtp").read_text(errors="replace")
+    assert sorted(os.listdir(tmp_path)) == ["out.vtp", "sphere.off"]  # no temporary left
+
+
+def test_appended_vtp_input_is_read_whole(phongvtk_cli, sphere_off, tmp_path):
+    phongvtk_cli("normals", sphere_off, "-o", "inline.vtp")
+    write_appended_vtp(tmp_path / "appended.vtp", read_vtp(tmp_path / "inline.vtp"))
+    result = phongvtk_cli("area", "appended.vtp", "--view", "0", "1", "0", "--json")
+    assert result.returncode == 0, result.stderr
+    report = json.loads(result.stdout)
+    points, faces = uv_sphere()
+    assert report["cells"] == len(faces), report
+
+
+def test_appended_vtp_without_the_fix_is_a_clear_error_only_where_expat_defers(
+        phongvtk_cli, environment, sphere_off, tmp_path):
+    phongvtk_cli("normals", sphere_off, "-o", "inline.vtp")
+    write_appended_vtp(tmp_path / "appended.vtp", read_vtp(tmp_path / "inline.vtp"))
+    environment["PHONGVTK_KEEP_EXPAT_DEFERRAL"] = "1"
+    try:
+        result = phongvtk_cli("normals", "appended.vtp", "-o", "out.vtp")
+    finally:
+        del environment["PHONGVTK_KEEP_EXPAT_DEFERRAL"]
+    if EXPAT_DEFERS:
+        expect_clean_error(result, "appended.vtp", "appended mode", "expat",
+                           "PHONGVTK_KEEP_EXPAT_DEFERRAL", "inline binary")
+    else:
+        assert result.returncode == 0, result.stderr
+
+
 # --- bad input --------------------------------------------------------------------------------
 
 
