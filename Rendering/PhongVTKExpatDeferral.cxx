@@ -53,29 +53,35 @@ Outcome Apply()
     ParserCreate = reinterpret_cast<ParserCreateFunction>(dlsym(expat, "XML_ParserCreate"));
     SetReparseDeferral =
       reinterpret_cast<SetDeferralFunction>(dlsym(expat, "XML_SetReparseDeferralEnabled"));
+    dlclose(expat); // only drops the reference dlopen took: VTK's library keeps expat loaded
   }
+  const char* keep = std::getenv("PHONGVTK_KEEP_EXPAT_DEFERRAL");
   if (!ParserCreate || !SetReparseDeferral)
   {
     outcome.State = phongvtk::ExpatDeferral::Absent;
   }
-  else if (const char* keep = std::getenv("PHONGVTK_KEEP_EXPAT_DEFERRAL"))
+  else if (phongvtk::VTKReadsAppendedXML())
   {
-    outcome.State = *keep && std::strcmp(keep, "0") != 0 ? phongvtk::ExpatDeferral::Kept
-                                                         : phongvtk::ExpatDeferral::Disabled;
+    // This VTK stops at AppendedData by itself (Debian's 9.1 carries the upstream fix).
+    outcome.State = phongvtk::ExpatDeferral::NotNeeded;
+  }
+  else if (keep && *keep && std::strcmp(keep, "0") != 0)
+  {
+    outcome.State = phongvtk::ExpatDeferral::Kept;
+  }
+  else if (phongvtk::RouteImport("libvtkIOXMLParser", "XML_ParserCreate",
+             reinterpret_cast<void*>(&ParserCreateWithoutDeferral), &outcome.Problem) == 0)
+  {
+    outcome.State = phongvtk::ExpatDeferral::Failed;
+  }
+  else if (!phongvtk::VTKReadsAppendedXML())
+  {
+    outcome.State = phongvtk::ExpatDeferral::Failed;
+    outcome.Problem = "VTK's XML parser still stops short of appended data with deferral off";
   }
   else
   {
     outcome.State = phongvtk::ExpatDeferral::Disabled;
-  }
-  if (outcome.State == phongvtk::ExpatDeferral::Disabled &&
-    phongvtk::RouteImport("libvtkIOXMLParser", "XML_ParserCreate",
-      reinterpret_cast<void*>(&ParserCreateWithoutDeferral), &outcome.Problem) == 0)
-  {
-    outcome.State = phongvtk::ExpatDeferral::Failed;
-  }
-  if (expat)
-  {
-    dlclose(expat); // only drops the reference dlopen took: VTK's library keeps expat loaded
   }
 #endif
   return outcome;

@@ -10,12 +10,14 @@
  * Appended data is vtkXMLWriter's default mode, so this loses most .vtp/.vtu files; ParaView
  * 5.11's own ranks exchange data that way (RedistributeDataSet under MPI hangs on it).
  *
- * When this library is loaded, every expat parser that VTK's XML parser library creates has
- * deferral turned off: the behaviour VTK 9.1/9.2 was written for (every expat before 2.6). VTK
- * 9.3.1 and later no longer depend on it, and nothing is changed there. The cost deferral saves,
- * reparsing one token that spans many of VTK's 4 KiB reads, does not arise with VTK's files: their
- * large contents (ASCII and base64 data) are character data, which expat reports as it goes.
- * Set PHONGVTK_KEEP_EXPAT_DEFERRAL=1 to leave expat as it is.
+ * When this library is loaded, and VTK's parser is found to fail that way (it parses such a
+ * document from memory), every expat parser that VTK's XML parser library creates from then on
+ * has deferral turned off: the behaviour VTK 9.1/9.2 was written for (every expat before 2.6).
+ * VTK 9.3.1 and later stop at AppendedData without the handler (so does Debian's VTK 9.1 since
+ * 9.1.0+really9.1.0+dfsg2-5+deb12u1, which carries that fix), and nothing is changed there. The
+ * cost deferral saves, reparsing one token that spans many of VTK's 4 KiB reads, does not arise
+ * with VTK's files: their large contents (ASCII and base64 data) are character data, which expat
+ * reports as it goes. Set PHONGVTK_KEEP_EXPAT_DEFERRAL=1 to leave expat as it is.
  */
 #ifndef PhongVTKExpatDeferral_h
 #define PhongVTKExpatDeferral_h
@@ -31,9 +33,9 @@ enum class ExpatDeferral
 {
   Absent,    ///< the expat VTK uses has no reparse deferral: nothing to do
   Disabled,  ///< VTK's XML parsers are created with deferral off
-  Kept,      ///< PHONGVTK_KEEP_EXPAT_DEFERRAL asked to leave it on
-  NotNeeded, ///< this VTK (>= 9.3.1) reads appended data with deferral on
-  Failed     ///< deferral is on and could not be turned off (see the problem)
+  Kept,      ///< VTK fails, and PHONGVTK_KEEP_EXPAT_DEFERRAL asked to leave expat as it is
+  NotNeeded, ///< this VTK reads appended data with deferral on
+  Failed     ///< VTK fails, and turning deferral off did not help (see the problem)
 };
 
 /// What was done when the library was loaded; `*problem` (if given) says why for Failed.

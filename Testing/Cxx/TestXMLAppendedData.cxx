@@ -10,12 +10,14 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSphereSource.h"
+#include "vtkVersionMacros.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include <gtest/gtest.h>
 
 #include <dlfcn.h>
+#include <sys/wait.h>
 
 #include <cstdlib>
 #include <ostream>
@@ -67,25 +69,44 @@ TEST(ExpatDeferral, VTKReadsAppendedDataOnceTheModuleIsLoaded)
 {
   std::string problem;
   const phongvtk::ExpatDeferral state = phongvtk::GetExpatDeferral(&problem);
-  EXPECT_EQ(
-    state, ExpatDefers() ? phongvtk::ExpatDeferral::Disabled : phongvtk::ExpatDeferral::Absent)
-    << problem;
+  if (ExpatDefers())
+  {
+    EXPECT_TRUE(
+      state == phongvtk::ExpatDeferral::Disabled || state == phongvtk::ExpatDeferral::NotNeeded)
+      << static_cast<int>(state) << " " << problem;
+  }
+  else
+  {
+    EXPECT_EQ(state, phongvtk::ExpatDeferral::Absent) << problem;
+  }
   EXPECT_TRUE(phongvtk::VTKReadsAppendedXML());
 }
 
 // The case the fix exists for, in a child process that loads the module with the fix declined:
-// VTK then fails exactly where expat defers.
-TEST(ExpatDeferral, WithoutTheFixVTKFailsExactlyWhereExpatDefers)
+// VTK then fails exactly when the module said it needed the fix, and ParaView 5.11's VTK 9.2
+// (which Debian has not patched) needs it wherever expat defers.
+TEST(ExpatDeferral, WithoutTheFixVTKFailsExactlyWhereTheFixIsNeeded)
 {
   GTEST_FLAG_SET(death_test_style, "threadsafe"); // the child runs this binary anew
   setenv("PHONGVTK_KEEP_EXPAT_DEFERRAL", "1", 1);
-  const int expected = ExpatDefers() ? 1 : 0;
+  const bool vtk92 = VTK_MAJOR_VERSION == 9 && VTK_MINOR_VERSION == 2;
+  // The child's exit status: 1 when VTK fails and the module kept expat as it is, 0 when VTK
+  // reads and the module found nothing to do, 3 for any other combination.
   EXPECT_EXIT(
     {
-      const bool kept = phongvtk::GetExpatDeferral() != phongvtk::ExpatDeferral::Disabled;
-      std::exit(kept && !phongvtk::VTKReadsAppendedXML() ? 1 : 0);
+      const phongvtk::ExpatDeferral state = phongvtk::GetExpatDeferral();
+      const bool reads = phongvtk::VTKReadsAppendedXML();
+      const bool kept = state == phongvtk::ExpatDeferral::Kept;
+      const bool quiet =
+        state == phongvtk::ExpatDeferral::Absent || state == phongvtk::ExpatDeferral::NotNeeded;
+      std::exit(kept && !reads ? 1 : quiet && reads ? 0 : 3);
     },
-    testing::ExitedWithCode(expected), "");
+    [&](int status)
+    {
+      const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      return ExpatDefers() ? (code == 1 || (!vtk92 && code == 0)) : code == 0;
+    },
+    "");
   unsetenv("PHONGVTK_KEEP_EXPAT_DEFERRAL");
 }
 
