@@ -2,6 +2,9 @@
 
 #include "PhongVTKMapperCore.h"
 
+// VTK 9.1's vtkCompositeMapperHelper2.h uses GLenum without declaring it (fixed in 9.2).
+#include "vtk_glew.h"
+
 #include "vtkCompositeMapperHelper2.h"
 #include "vtkObjectFactory.h"
 

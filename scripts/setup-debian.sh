@@ -18,10 +18,14 @@ fi
 
 case "$PHONGVTK_FLAVOUR" in
   paraview)
-    # ParaView 5.11's SDK (VTK 9.2 inside) and the -dev packages its CMake config looks for
+    # ParaView 5.11's SDK (VTK 9.2 inside) and the -dev packages its CMake config looks for;
+    # paraview-dev depends on none of them. Found by configuring in a debootstrap minbase root
+    # (../shared/tools/fresh-debian-check): without libfreetype-dev the configure stops in
+    # VTK-targets.cmake (Freetype::Freetype), without libjpeg-dev/libtiff-dev it reports them
+    # missing for VTK::IOImage.
     flavour=(paraview-dev python3-paraview python3-dev libopenmpi-dev libdouble-conversion-dev
-      libutfcpp-dev liblz4-dev liblzma-dev libexpat1-dev zlib1g-dev libpugixml-dev libjsoncpp-dev
-      libeigen3-dev)
+      libutfcpp-dev liblz4-dev liblzma-dev zlib1g-dev libpugixml-dev libjsoncpp-dev
+      libeigen3-dev libfreetype-dev libjpeg-dev libtiff-dev libpng-dev)
     other=python3-vtk9
     ;;
   vtk)
@@ -41,6 +45,8 @@ packages=(
   "${flavour[@]}"
   # headless rendering: OSMesa and EGL (Mesa llvmpipe), no X server
   libosmesa6-dev libegl-dev libgl-dev libx11-dev libglew-dev
+  # VTK's XML parser on the system's expat (Rendering/PhongVTKExpatDeferral.cxx)
+  libexpat1-dev
   # an X server for the tests that check coexistence with VTK's own GLX window
   xvfb
   # exact arithmetic (EXACT fallback, test reference), tests, benchmarks
