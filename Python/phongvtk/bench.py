@@ -163,12 +163,18 @@ def short(number):
 
 
 def ladder_inputs(mesh, label, offset=1e7, needle_count=20000):
-    """The ladder's inputs: `mesh` as it is, moved by `offset`, and needles of aspect 1e12."""
+    """The ladder's inputs: `mesh` as it is, moved by `offset`, scaled by 2^-1000 and by 2^1000
+    (exactly: the same polygons at the ends of the double range, where a product of two
+    coordinates under- or overflows), and needles of aspect 1e12."""
     points, offsets, connectivity = polygons_of(mesh)
     ordinary = polydata_from_arrays(points, offsets, connectivity)
     return [
         LadderInput(f"ordinary: {label}", ordinary),
         LadderInput(f"offset {short(offset)}: {label}", translated(ordinary, offset)),
+        LadderInput(f"tiny, x 2^-1000: {label}",
+                    polydata_from_arrays(np.ldexp(points, -1000), offsets, connectivity)),
+        LadderInput(f"huge, x 2^1000: {label}",
+                    polydata_from_arrays(np.ldexp(points, 1000), offsets, connectivity)),
         LadderInput("needles, aspect 1e12", needles(needle_count)),
     ]
 
@@ -233,18 +239,33 @@ def normals_by_mode(mesh):
     return filters
 
 
+#: Shortest timed sample: a mode that takes less per run is timed over several runs at once, so
+#: that the clock's resolution and the noise of one short run do not decide the ranking.
+MIN_SAMPLE_SECONDS = 0.02
+
+
 def median_times(filters, repeats):
-    """Median seconds of Update() per filter; the filters take turns so that the machine's
-    drift and noise fall on all of them alike."""
-    times = {mode: [] for mode in filters}
-    for normals in filters.values():  # warm-up: allocation, first touch of the input
-        normals.Update()
-    for _ in range(repeats):
-        for mode, normals in filters.items():
+    """Median seconds of one Update() per filter. Every filter is warmed up first (allocation,
+    first touch of the input and output), then each sample times a batch of runs long enough to
+    measure (the same batch for every filter); the filters take turns, starting with a different
+    one each round, so that the machine's drift and noise fall on all of them alike."""
+
+    def run(normals, count):
+        start = time.perf_counter()
+        for _ in range(count):
             normals.Modified()
-            start = time.perf_counter()
             normals.Update()
-            times[mode].append(time.perf_counter() - start)
+        return (time.perf_counter() - start) / count
+
+    slowest = 0.0
+    for _ in range(2):  # the first round allocates; the second is what a run costs
+        slowest = max(run(normals, 1) for normals in filters.values())
+    batch = max(1, math.ceil(MIN_SAMPLE_SECONDS / max(slowest, 1e-9)))
+    times = {mode: [] for mode in filters}
+    order = list(filters)
+    for round_ in range(repeats):
+        for mode in order[round_ % len(order):] + order[:round_ % len(order)]:
+            times[mode].append(run(filters[mode], batch))
     return {mode: statistics.median(values) for mode, values in times.items()}
 
 

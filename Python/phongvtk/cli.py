@@ -14,6 +14,7 @@ import sys
 
 import numpy as np
 from vtkmodules.util import numpy_support
+from vtkmodules.vtkFiltersCore import vtkQuadricDecimation, vtkTriangleFilter
 from vtkmodules.vtkRenderingCore import vtkCamera
 
 import phongvtk
@@ -26,6 +27,7 @@ from .io import (
     check_output,
     default_mesh,
     read_mesh,
+    torus,
     write_mesh,
     write_png,
 )
@@ -34,12 +36,15 @@ from .render import (
     ACCURACIES,
     BACKENDS,
     PRESETS,
+    SHADING_LABELS,
     SHADINGS,
     WEIGHTINGS,
     Light,
     Material,
     Scene,
     View,
+    Panel,
+    render_grid,
     render_panels,
 )
 
@@ -411,17 +416,74 @@ def run_bench(args, progress):
             save_plot(bench.plot_shading, rows, path, args)
 
 
+def coarse_copy(mesh, triangles, progress):
+    """`mesh` decimated to about `triangles` triangles by VTK's quadric decimation (volume kept),
+    or None when it has no more than twice that many."""
+    if mesh.GetNumberOfPolys() + mesh.GetNumberOfStrips() <= 2 * triangles:
+        return None
+    split = vtkTriangleFilter()
+    split.SetInputData(mesh)
+    split.PassVertsOff()
+    split.PassLinesOff()
+    progress.run(split, "triangulate", "cannot triangulate the mesh")
+    decimation = vtkQuadricDecimation()
+    decimation.SetInputConnection(split.GetOutputPort())
+    decimation.SetTargetReduction(1.0 - triangles / split.GetOutput().GetNumberOfPolys())
+    decimation.VolumePreservationOn()
+    progress.run(decimation, f"decimate to {triangles} triangles", "cannot decimate the mesh")
+    return decimation.GetOutput()
+
+
+#: The demo's smooth surface: a torus this coarse (2 x 24 x 12 triangles) beside a fine one.
+DEMO_TORUS = (24, 12)
+DEMO_TORUS_FINE = 256
+
+
+def triangles_label(shading, surface):
+    """A panel's label: the shading and the triangle count of `surface`."""
+    count = surface.GetNumberOfPolys() + surface.GetNumberOfStrips()
+    return f"{SHADING_LABELS[shading]}\n{count:,} triangles"
+
+
+def demo_rows(mesh, coarse_triangles, progress):
+    """The panels of the demo picture and the view of each row. Top: `mesh` decimated to
+    `coarse_triangles` (when it has many more) flat, Gouraud and Phong, then the whole mesh in
+    Phong shading. Bottom: the same for a coarse torus and a fine one, a smooth surface where
+    Phong shading of the coarse mesh is what the fine mesh looks like."""
+    coarse = coarse_copy(mesh, coarse_triangles, progress)
+    shown = coarse if coarse is not None else mesh
+    top = [Panel(shown, shading, triangles_label(shading, shown)) for shading in SHADINGS]
+    if coarse is not None:
+        top.append(Panel(mesh, "phong", triangles_label("phong", mesh)))
+    coarse_torus, fine = torus(*DEMO_TORUS), torus(DEMO_TORUS_FINE)
+    bottom = [Panel(coarse_torus, shading, triangles_label(shading, coarse_torus))
+              for shading in SHADINGS]
+    bottom.append(Panel(fine, "phong", triangles_label("phong", fine)))
+    return [top, bottom]
+
+
 def run_demo(args, progress):
-    """demo: the mesh flat, Gouraud and Phong side by side, then the normals ladder."""
+    """demo: a real mesh and a torus, coarse and fine, flat, Gouraud and Phong; the normals
+    ladder; the shading error against tessellation."""
     check_output(args.output, [".png"])
     mesh, label = the_mesh(args, progress)
-    image = render_panels(mesh, list(SHADINGS), scene_from(args), args.size, args.backend,
-                          labels=True, progress=progress)
+    rows = demo_rows(mesh, args.coarse, progress)
+    scene = scene_from(args)
+    torus_view = View(azimuth=scene.view.azimuth, elevation=scene.view.elevation + 40.0,
+                      parallel=scene.view.parallel, zoom=scene.view.zoom)
+    image = render_grid(rows, scene, args.size, args.backend, labels=True, progress=progress,
+                        views=[scene.view, torus_view])
     write_png(image, args.output, progress)
-    say(args, f"wrote {args.output}: {label} flat, Gouraud and Phong "
-              f"({3 * args.size[0]} x {args.size[1]})")
     if not args.no_table:
         normals_ladder(mesh, label, args, progress)
+        print(flush=True)
+        settings = bench_settings(args)
+        shading = bench.measure_shading(settings["thetas"], settings["size"], False, args.weighting,
+                                        args.backend, progress)
+        print(bench.format_shading(shading, settings["size"], False, args.weighting), flush=True)
+        print(flush=True)
+    print(f"picture: {os.path.abspath(args.output)} (top: {label}, decimated and whole; bottom: "
+          "a torus, coarse and fine; flat, Gouraud and Phong shading)", flush=True)
 
 
 # --- the parser -----------------------------------------------------------------------------
@@ -437,7 +499,7 @@ Run `python3 -m phongvtk COMMAND --help` for a command's options.
 
 EPILOG = """\
 examples:
-  python3 -m phongvtk demo                                  # bunny, three shadings + table
+  python3 -m phongvtk demo                                  # bunny, three shadings, tables
   python3 -m phongvtk render bunny.off -o bunny.png --shading phong --preset metal
   python3 -m phongvtk normals bunny.off -o bunny.vtp --accuracy exact --point-normals
   python3 -m phongvtk area cube.stl --view 0 0 1 --json
@@ -548,12 +610,18 @@ def build_parser():
     benchmark.set_defaults(run=run_bench)
 
     demo = commands.add_parser(
-        "demo", help="the bunny flat, Gouraud and Phong, and the normals table",
+        "demo", help="the bunny coarse and whole, flat, Gouraud and Phong; both tables",
         description="Render a real mesh (CGAL's bunny from Debian's libcgal-demo; a parametric "
-                    "torus when it is not installed) flat, Gouraud and Phong side by side into "
-                    "one PNG, then print the normals ladder of that mesh (as bench does).")
+                    "torus when it is not installed) flat, Gouraud and Phong side by side, "
+                    "decimated to a few thousand triangles (top row: where the shading modes "
+                    "differ plainly) and whole (bottom row), into one PNG; then print the "
+                    "normals ladder of that mesh and the shading error against tessellation "
+                    "(as bench does).")
     demo.add_argument("-o", "--output", default="phongvtk-demo.png", metavar="PNG",
                       help="the image to write (default phongvtk-demo.png)")
+    demo.add_argument("--coarse", type=positive_int, default=2000, metavar="N",
+                      help="triangles of the decimated copy (default 2000; none when the mesh "
+                           "has fewer than 2N)")
     demo.add_argument("--no-table", action="store_true", help="only the picture")
     add_bench_options(demo)
     add_scene(demo, (400, 400), "panel", zoom=1.4)

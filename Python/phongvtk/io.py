@@ -8,8 +8,9 @@ strips). CGAL's bunny comes from Debian's libcgal-demo archive (:func:`cgal_mesh
 torus stands in when the archive is absent (:func:`default_mesh`).
 """
 
-import ctypes
 import os
+import subprocess
+import sys
 import tarfile
 import tempfile
 
@@ -17,9 +18,7 @@ import numpy as np
 from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonCore import vtkPoints, vtkVersion
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
-from vtkmodules.vtkCommonComputationalGeometry import vtkParametricTorus
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
-from vtkmodules.vtkFiltersSources import vtkParametricFunctionSource
 from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader, vtkSTLWriter
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOLegacy import vtkPolyDataReader, vtkPolyDataWriter
@@ -103,21 +102,42 @@ def read_mesh(path, progress=None):
     return mesh
 
 
-def expat_defers_reparsing():
-    """Whether the system's expat defers reparsing partial tokens (expat >= 2.6.0, or Debian
-    12's backport in 2.5.0-1+deb12u2 and later), which VTK before 9.3.1 cannot read appended
-    XML data with unless PhongVTK's module turned it off (see PhongVTKExpatDeferral.h)."""
+#: A VTK program that reads an XML document with appended data from memory and prints how many
+#: points it found: VTK before 9.3.1 finds none when expat defers reparsing (expat >= 2.6.0, or
+#: Debian 12's backport in 2.5.0-1+deb12u2 and later) unless PhongVTK's module turned that off.
+APPENDED_XML_PROBE = """
+import numpy as np
+from vtkmodules.util import numpy_support
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
+points = vtkPoints()
+points.SetData(numpy_support.numpy_to_vtk(np.random.default_rng(1).random((4000, 3)), deep=1))
+mesh = vtkPolyData()
+mesh.SetPoints(points)
+writer = vtkXMLPolyDataWriter()
+writer.SetInputData(mesh)
+writer.SetCompressorTypeToNone()
+writer.WriteToOutputStringOn()
+writer.Write()
+reader = vtkXMLPolyDataReader()
+reader.ReadFromInputStringOn()
+reader.SetInputString(writer.GetOutputString())
+reader.Update()
+print(reader.GetOutput().GetNumberOfPoints())
+"""
+
+
+def vtk_reads_appended_xml():
+    """Whether this VTK without PhongVTK reads XML appended data on this machine (asked of a
+    Python process of its own, which has not loaded PhongVTK's fix)."""
+    env = {key: value for key, value in os.environ.items() if key != "PYTHONPATH"}
     try:
-        return hasattr(ctypes.CDLL("libexpat.so.1"), "XML_SetReparseDeferralEnabled")
-    except OSError:
-        return False
-
-
-def vtk_before(major, minor, build):
-    """Whether this VTK is older than major.minor.build."""
-    version = (vtkVersion.GetVTKMajorVersion(), vtkVersion.GetVTKMinorVersion(),
-               vtkVersion.GetVTKBuildVersion())
-    return version < (major, minor, build)
+        result = subprocess.run([sys.executable, "-c", APPENDED_XML_PROBE], env=env,
+                                capture_output=True, text=True, timeout=60)
+    except (OSError, subprocess.SubprocessError):
+        return True  # cannot tell: blame nothing
+    return result.returncode != 0 or result.stdout.split()[-1:] == ["4000"]
 
 
 def explain_appended_data(path, error):
@@ -125,7 +145,7 @@ def explain_appended_data(path, error):
     appended data that this VTK cannot parse with the system's expat; returns otherwise."""
     with open(path, "rb") as file:
         head = file.read(1 << 20)
-    if b"<AppendedData" not in head or not expat_defers_reparsing() or not vtk_before(9, 3, 1):
+    if b"<AppendedData" not in head or vtk_reads_appended_xml():
         return
     keep = os.environ.get("PHONGVTK_KEEP_EXPAT_DEFERRAL", "")
     cause = ("PHONGVTK_KEEP_EXPAT_DEFERRAL is set, which leaves the system's expat as it is"
@@ -432,25 +452,31 @@ def cgal_mesh(name="bunny00.off", archive=CGAL_DATA_ARCHIVE):
     return None
 
 
-def parametric_surface(resolution=256):
-    """A torus from vtkParametricFunctionSource (ring radius 1, tube radius 0.5), 2 r^2
-    triangles, without the source's normals."""
-    torus = vtkParametricTorus()
-    source = vtkParametricFunctionSource()
-    source.SetParametricFunction(torus)
-    source.SetUResolution(resolution)
-    source.SetVResolution(resolution)
-    source.GenerateNormalsOff()
-    source.GenerateTextureCoordinatesOff()
-    source.SetOutputPointsPrecision(source.DOUBLE_PRECISION)
-    source.Update()
-    return source.GetOutput()
+def torus(ring_segments=256, tube_segments=None, ring_radius=1.0, tube_radius=0.5):
+    """A torus about the z axis, `ring_segments` x `tube_segments` (default: the same) quads
+    each split in two, counter-clockwise seen from outside: 2 u v triangles on u v points, every
+    point shared by all its faces (no seam). Double points, no normals."""
+    v_count = tube_segments or ring_segments
+    u = 2 * np.pi * np.arange(ring_segments) / ring_segments
+    v = 2 * np.pi * np.arange(v_count) / v_count
+    uu, vv = np.meshgrid(u, v, indexing="ij")
+    distance = ring_radius + tube_radius * np.cos(vv)
+    points = np.stack([distance * np.cos(uu), distance * np.sin(uu), tube_radius * np.sin(vv)],
+                      axis=-1).reshape(-1, 3)
+    i, j = np.meshgrid(np.arange(ring_segments), np.arange(v_count), indexing="ij")
+    a = i * v_count + j
+    b = ((i + 1) % ring_segments) * v_count + j
+    c = ((i + 1) % ring_segments) * v_count + (j + 1) % v_count
+    d = i * v_count + (j + 1) % v_count
+    triangles = np.stack([np.stack([a, b, c], -1), np.stack([a, c, d], -1)], axis=2)
+    offsets = np.arange(0, triangles.size + 1, 3, dtype=np.int64)
+    return polydata_from_arrays(points, offsets, triangles.reshape(-1).astype(np.int64))
 
 
 def default_mesh(progress=None, resolution=256):
-    """(mesh, label): CGAL's bunny when Debian's libcgal-demo is installed, else a parametric
-    torus of `resolution` squared quads split in two."""
+    """(mesh, label): CGAL's bunny when Debian's libcgal-demo is installed, else a torus of
+    `resolution` squared quads split in two."""
     path = cgal_mesh()
     if path is not None:
         return read_mesh(path, progress), os.path.basename(path)
-    return parametric_surface(resolution), f"parametric torus {resolution}x{resolution}"
+    return torus(resolution), f"torus {resolution}x{resolution}"

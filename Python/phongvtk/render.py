@@ -12,7 +12,7 @@ from typing import List, Optional, Tuple
 
 import numpy as np
 from vtkmodules.util import numpy_support
-from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPolyData
 from vtkmodules.vtkRenderingCore import (
     vtkActor,
     vtkLight,
@@ -213,11 +213,12 @@ def add_label(renderer, text, height, background):
     label = vtkTextActor()
     label.SetInput(text)
     prop = label.GetTextProperty()
-    prop.SetFontSize(max(10, height // 12))
+    prop.SetFontSize(max(10, height // (14 if "\n" in text else 12)))
+    prop.SetVerticalJustificationToTop()
     luminance = 0.2126 * background[0] + 0.7152 * background[1] + 0.0722 * background[2]
     prop.SetColor(*((0.0,) * 3 if luminance > 0.5 else (1.0,) * 3))
     label.GetPositionCoordinate().SetCoordinateSystemToNormalizedViewport()
-    label.GetPositionCoordinate().SetValue(0.03, 0.9)
+    label.GetPositionCoordinate().SetValue(0.03, 0.97)
     renderer.AddActor2D(label)
 
 
@@ -252,30 +253,57 @@ def pixels(image):
     return values.reshape(height, width, -1)[::-1, :, :3]
 
 
+@dataclass
+class Panel:
+    """One panel of a picture: `mesh` drawn in `shading`, labelled `label` (when labels are on;
+    empty: the shading's name)."""
+
+    mesh: vtkPolyData
+    shading: str
+    label: str = ""
+
+
 def render_panels(mesh, shadings, scene, size, backend="osmesa", labels=False, progress=None):
     """Draws `mesh` once per shading mode in `shadings`, side by side, each panel `size`
     (width, height) pixels, with a shared camera; optionally labels the panels. Returns the
     frame as a vtkImageData."""
+    row = [Panel(mesh, shading) for shading in shadings]
+    return render_grid([row], scene, size, backend, labels, progress)
+
+
+def render_grid(rows, scene, size, backend="osmesa", labels=False, progress=None, views=None):
+    """Draws rows of :class:`Panel` (the first row on top), each panel `size` (width, height)
+    pixels; the panels of a row share one camera, which frames the row's first mesh as `views`
+    (one :class:`View` per row; default: the scene's) says. Optionally labels each panel.
+    Returns the frame as a vtkImageData."""
     progress = progress or Progress(quiet=True)
     width, height = size
-    window = make_window((width * len(shadings), height), backend)
-    camera = None
-    for index, shading in enumerate(shadings):
-        normals = normals_filter(mesh, shading, scene.accuracy, scene.weighting)
-        progress.run(normals, f"normals ({shading})", "cannot compute the normals")
-        actor = shaded_actor(normals.GetOutput(), shading, scene.material)
-        actor.GetMapper().SetSceneAmbient(scene.derived_ambient)
-        viewport = (index / len(shadings), 0.0, (index + 1) / len(shadings), 1.0)
-        renderer = make_renderer(scene, viewport)
-        renderer.AddActor(actor)
-        if camera is None:
-            camera = renderer.GetActiveCamera()
-            scene.view.frame(camera, mesh.GetBounds(), width / height)
-        else:
-            renderer.SetActiveCamera(camera)
-        if labels:
-            add_label(renderer, SHADING_LABELS[shading], height, scene.background)
-        window.AddRenderer(renderer)
+    columns = max(len(row) for row in rows)
+    window = make_window((width * columns, height * len(rows)), backend)
+    for r, row in enumerate(rows):
+        bottom = (len(rows) - 1 - r) / len(rows)
+        camera = None
+        for index, panel in enumerate(row):
+            normals = normals_filter(panel.mesh, panel.shading, scene.accuracy, scene.weighting)
+            progress.run(normals, f"normals ({panel.shading})", "cannot compute the normals")
+            actor = shaded_actor(normals.GetOutput(), panel.shading, scene.material)
+            actor.GetMapper().SetSceneAmbient(scene.derived_ambient)
+            viewport = (index / columns, bottom, (index + 1) / columns, bottom + 1 / len(rows))
+            renderer = make_renderer(scene, viewport)
+            renderer.AddActor(actor)
+            if camera is None:
+                camera = renderer.GetActiveCamera()
+                view = views[r] if views else scene.view
+                view.frame(camera, panel.mesh.GetBounds(), width / height)
+            else:
+                renderer.SetActiveCamera(camera)
+            if labels:
+                add_label(renderer, panel.label or SHADING_LABELS[panel.shading], height,
+                          scene.background)
+            window.AddRenderer(renderer)
+        for index in range(len(row), columns):  # a short row: the background fills the rest
+            viewport = (index / columns, bottom, (index + 1) / columns, bottom + 1 / len(rows))
+            window.AddRenderer(make_renderer(scene, viewport))
     progress.run(window, "render", "cannot render", "Render")
     image = capture(window)
     window.Finalize()
