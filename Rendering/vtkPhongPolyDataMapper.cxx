@@ -31,33 +31,36 @@ void vtkPhongPolyDataMapper::ApplyPreset(vtkProperty* property, int preset)
   {
     return;
   }
+  if (preset < PLASTIC || preset > MATTE)
+  {
+    vtkGenericWarningMacro("Unknown material preset " << preset << ": use PLASTIC (0), METAL (1) "
+                                                      << "or MATTE (2).");
+    return;
+  }
+  // Coefficients chosen so that ambient + diffuse stay below 1 under one white light of
+  // intensity 1 (VTK's headlight) and under ParaView's light kit, whose lights add up to about
+  // that on a surface facing the viewer; only the core of a highlight saturates.
+  struct Coefficients
+  {
+    double Diffuse, Specular, SpecularPower;
+  };
+  constexpr Coefficients presets[] = { { 0.8, 0.3, 30.0 }, { 0.45, 0.6, 60.0 }, { 0.9, 0.0, 1.0 } };
+  const Coefficients& c = presets[preset];
   double colour[3];
   property->GetDiffuseColor(colour);
-  // ka = kd: the ambient reflectance is the diffuse one.
+  // ka = kd as colours; the ambient coefficient is the strength of the ambient light's share.
+  property->SetAmbientColor(colour);
+  property->SetAmbient(0.1);
+  property->SetDiffuse(c.Diffuse);
+  property->SetSpecular(c.Specular);
+  property->SetSpecularPower(c.SpecularPower);
   if (preset == METAL)
   {
-    property->SetDiffuse(0.4);
+    property->SetSpecularColor(colour); // a metal's highlight takes the surface's colour
   }
-  property->SetAmbientColor(colour);
-  property->SetAmbient(property->GetDiffuse());
-  switch (preset)
+  else
   {
-    case PLASTIC:
-      property->SetSpecularColor(1.0, 1.0, 1.0);
-      property->SetSpecular(0.5);
-      property->SetSpecularPower(30.0);
-      break;
-    case METAL:
-      property->SetSpecularColor(colour);
-      property->SetSpecular(1.0);
-      property->SetSpecularPower(100.0);
-      break;
-    case MATTE:
-      property->SetSpecular(0.0);
-      break;
-    default:
-      vtkGenericWarningMacro("Unknown material preset " << preset << ": use PLASTIC (0), METAL (1) "
-                                                        << "or MATTE (2).");
+    property->SetSpecularColor(1.0, 1.0, 1.0);
   }
 }
 

@@ -82,12 +82,16 @@ public:
   ///@}
 
   /**
-   * Material presets of the model, applied to a property keeping its diffuse colour C:
-   * - PLASTIC: ka = kd (AmbientColor = DiffuseColor = C, Ambient = Diffuse), white highlight
-   *   (SpecularColor white, Specular 0.5, SpecularPower 30);
-   * - METAL: ka = kd, highlight tinted by the surface (SpecularColor = C, Specular 1.0,
-   *   SpecularPower 100), weaker diffuse (Diffuse 0.4);
-   * - MATTE: ka = kd, no highlight (Specular 0).
+   * Material presets of the model, applied to a property keeping its diffuse colour C. All set
+   * ka = kd as colours (AmbientColor = DiffuseColor = C) with the ambient coefficient 0.1: the
+   * ambient light's strength, whether it is the renderer's (VTK's and
+   * ParaView's default (1, 1, 1)) or derived from the scene (SceneAmbient). Ambient + diffuse
+   * stay below 1 under VTK's headlight and ParaView's light kit; only highlights saturate.
+   * - PLASTIC: Diffuse 0.8, white highlight (SpecularColor white, Specular 0.3, SpecularPower 30);
+   * - METAL: Diffuse 0.45, highlight tinted by the surface (SpecularColor C, Specular 0.6,
+   *   SpecularPower 60);
+   * - MATTE: Diffuse 0.9, no highlight (Specular 0).
+   * An unknown preset changes nothing (and warns).
    */
   enum MaterialPreset
   {

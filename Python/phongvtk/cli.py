@@ -162,8 +162,9 @@ def add_scene(parser, size, what="image", zoom=1.0):
     material = parser.add_argument_group(
         "material", "A preset applied to --color, then any coefficient given here.")
     material.add_argument("--preset", choices=PRESETS + ("none",), default="plastic",
-                          help="ka = kd and: plastic, white highlight (default); metal, tinted "
-                               "highlight; matte, none; none: VTK's property defaults")
+                          help="ka = kd as colours, ambient 0.1, and: plastic, diffuse 0.8, white "
+                               "highlight (default); metal, diffuse 0.45, tinted highlight; "
+                               "matte, diffuse 0.9, none; none: VTK's property defaults")
     material.add_argument("--color", type=non_negative, nargs=3, default=(0.9, 0.6, 0.3),
                           metavar=("R", "G", "B"), help="diffuse colour (default 0.9 0.6 0.3)")
     for name, what in (("ambient", "ka"), ("diffuse", "kd"), ("specular", "ks")):
@@ -178,9 +179,10 @@ def add_scene(parser, size, what="image", zoom=1.0):
                              "from the mesh toward the light), white or of colour R G B; "
                              "repeatable (default: a white key light from the viewer's upper "
                              "left)")
-    lights.add_argument("--scene-ambient", type=non_negative, nargs=3, default=(0.2, 0.2, 0.2),
+    lights.add_argument("--scene-ambient", type=non_negative, nargs=3, default=(1.0, 1.0, 1.0),
                         metavar=("R", "G", "B"),
-                        help="the scene's ambient light Ia (default 0.2 0.2 0.2)")
+                        help="the scene's ambient light Ia (default 1 1 1, VTK's and "
+                             "ParaView's; the material's ambient coefficient sets its share)")
     lights.add_argument("--derived-ambient", action="store_true",
                         help="derive Ia from the lights and the mean kd instead "
                              "(vtkPhongPolyDataMapper's SceneAmbient)")

@@ -162,7 +162,7 @@ class Scene:
 
     material: Material = field(default_factory=Material)
     lights: List[Light] = field(default_factory=list)
-    ambient: RGB = (0.2, 0.2, 0.2)
+    ambient: RGB = (1.0, 1.0, 1.0)
     derived_ambient: bool = False
     view: View = field(default_factory=View)
     background: RGB = (0.1, 0.1, 0.12)

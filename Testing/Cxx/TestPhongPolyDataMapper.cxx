@@ -489,24 +489,41 @@ TEST_F(PhongMapper, SmoothShadingWithoutPointNormalsFallsBackToFlatWithOneWarnin
     3.0, "fallback to flat");
 }
 
-// Presets set the material as documented, keeping the diffuse colour.
+// Presets set the material as documented (vtkPhongPolyDataMapper.h), keeping the diffuse colour:
+// ka = kd as colours with ambient strength 0.1, and the documented coefficients.
 TEST_F(PhongMapper, PresetsSetTheMaterial)
 {
   vtkNew<vtkProperty> p;
   p->SetDiffuseColor(0.8, 0.2, 0.1);
   p->SetDiffuse(0.9);
-  ASSERT_TRUE(vtkPhongPolyDataMapper::ApplyPreset(p, "plastic"));
-  EXPECT_EQ(p->GetAmbient(), p->GetDiffuse());
-  EXPECT_EQ(p->GetAmbientColor()[0], 0.8);
-  EXPECT_EQ(p->GetSpecularColor()[1], 1.0);
-  EXPECT_GT(p->GetSpecular(), 0);
-  ASSERT_TRUE(vtkPhongPolyDataMapper::ApplyPreset(p, "metal"));
-  EXPECT_EQ(p->GetSpecularColor()[1], 0.2) << "highlight tinted by the surface";
-  EXPECT_GE(p->GetSpecularPower(), 80);
-  ASSERT_TRUE(vtkPhongPolyDataMapper::ApplyPreset(p, "matte"));
-  EXPECT_EQ(p->GetSpecular(), 0);
-  EXPECT_EQ(p->GetDiffuseColor()[0], 0.8);
+  p->SetAmbient(0.7);
+  struct Expected
+  {
+    const char* Name;
+    double Diffuse, Specular, SpecularPower;
+    bool Tinted;
+  };
+  for (const Expected& e : { Expected{ "plastic", 0.8, 0.3, 30.0, false },
+         Expected{ "metal", 0.45, 0.6, 60.0, true }, Expected{ "matte", 0.9, 0.0, 1.0, false } })
+  {
+    ASSERT_TRUE(vtkPhongPolyDataMapper::ApplyPreset(p, e.Name)) << e.Name;
+    EXPECT_EQ(p->GetAmbient(), 0.1) << e.Name;
+    EXPECT_EQ(p->GetDiffuse(), e.Diffuse) << e.Name;
+    EXPECT_EQ(p->GetSpecular(), e.Specular) << e.Name;
+    if (e.Specular > 0)
+    {
+      EXPECT_EQ(p->GetSpecularPower(), e.SpecularPower) << e.Name;
+      EXPECT_EQ(p->GetSpecularColor()[1], e.Tinted ? 0.2 : 1.0) << e.Name;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_EQ(p->GetAmbientColor()[c], p->GetDiffuseColor()[c]) << e.Name;
+    }
+    EXPECT_EQ(p->GetDiffuseColor()[0], 0.8) << e.Name;
+  }
+  p->SetDiffuse(0.55);
   EXPECT_FALSE(vtkPhongPolyDataMapper::ApplyPreset(p, "velvet"));
+  EXPECT_EQ(p->GetDiffuse(), 0.55) << "an unknown preset changes nothing";
 }
 
 // Scene ambient: Ia = (sum of Id) * mean kd of the visible actors.

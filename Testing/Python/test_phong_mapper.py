@@ -113,3 +113,43 @@ def test_presets_by_name():
     assert phongvtk.vtkPhongPolyDataMapper.ApplyPreset(prop, "metal")
     assert prop.GetSpecularColor() == pytest.approx((0.8, 0.2, 0.1))
     assert not phongvtk.vtkPhongPolyDataMapper.ApplyPreset(prop, "velvet")
+
+
+def render_preset(preset, colour, scene_ambient):
+    """A sphere of `colour` with `preset` in VTK's default lighting: the headlight VTK makes
+    (white, intensity 1) and the renderer's default ambient light (1, 1, 1). Returns the pixels
+    the sphere covers (n x 3, 0-255)."""
+    sphere = vtkSphereSource()
+    sphere.SetThetaResolution(96)
+    sphere.SetPhiResolution(48)
+    mapper = phongvtk.vtkPhongPolyDataMapper()
+    mapper.SetInputConnection(sphere.GetOutputPort())
+    mapper.SetSceneAmbient(scene_ambient)
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetDiffuseColor(*colour)
+    assert phongvtk.vtkPhongPolyDataMapper.ApplyPreset(actor.GetProperty(), preset)
+    actor.GetProperty().SetInterpolationToPhong()
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    window = vtkRenderWindow()
+    window.AddRenderer(renderer)
+    window.SetSize(SIZE, SIZE)
+    window.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGB()
+    grab.Update()
+    pixels = numpy_support.vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
+    return pixels[np.any(pixels != pixels[0], axis=1)].astype(int)
+
+
+@pytest.mark.parametrize("scene_ambient", [False, True])
+@pytest.mark.parametrize("preset", ["plastic", "metal", "matte"])
+@pytest.mark.parametrize("colour", [(0.2, 0.5, 1.0), (1.0, 1.0, 1.0), (0.9, 0.6, 0.3)])
+def test_presets_do_not_wash_out_in_vtks_default_light(preset, colour, scene_ambient):
+    sphere = render_preset(preset, colour, scene_ambient)
+    clipped = np.mean(np.any(sphere == 255, axis=1))
+    assert clipped <= 0.03, f"{100 * clipped:.1f}% of the sphere saturates"
+    brightest = sphere.max(axis=1)
+    assert np.median(brightest) >= 0.3 * 255 * max(colour), "too dark to see"
