@@ -10,16 +10,20 @@
  * Error bounds (u = 2^-53 for double, u_f = 2^-24 for float; T = number of fan triangles =
  * n - 2; P_c = sum of |products| entering component c of w, the condition of that component):
  *
- *   FAST         |error of w_c| <= (T + 3) u_f P_c;  unit normal: + 4.5 u_f per component.
+ *   FAST         |error of w_c| <= (T + 3) u_f P_c;  unit normal: + 4.5 u_f |n_c| per component.
  *                Differences of double points are rounded to float: add 2 u P_c.
- *   DOUBLE       |error of w_c| <= (T + 3) u P_c;  unit normal: + 3.5 u per component.
+ *   DOUBLE       |error of w_c| <= (T + 3) u P_c;  unit normal: + 3.5 u |n_c| per component.
  *   COMPENSATED  |error of w_c| <= u |w_c| + (T + 65) u^2 P_c to first order (the rounding of
  *                the error accumulator can reach T (T + 4) u^2 P_c when partial sums grow
- *                coherently; not observed); unit normal: + 3.5 u. A few ulp unless
+ *                coherently; not observed); unit normal: + 3.5 u |n_c|. A few ulp unless
  *                P_c > |w_c| / u.
  *   EXACT        exact area vector (certified double-double, else GMP integers); every component
  *                of the unit normal within 1 ulp of w_c / |w| (faithful), zero exactly when the
  *                exact w is zero.
+ *
+ * The unit normal's term is the normalisation: |w| from a rounded sum of squares and a square
+ * root (2.5 u), then a division (1 u), or for FAST a rounded reciprocal and a product (2 u_f),
+ * added to the error of w carried through w / |w| (TestAreaVectorKernels.cxx states it whole).
  *
  * Underflow adds an absolute term to the inexact modes: a component below 2^-126 (float) or
  * 2^-1022 (double) of the polygon's own size cannot be resolved by one exponent; such components

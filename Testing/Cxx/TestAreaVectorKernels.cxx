@@ -10,8 +10,9 @@
  *
  *   area vector  |w~_c - w_c| <= B_c = (T + 3) u P_c                   FAST, DOUBLE
  *                                B_c = u |w_c| + (T + 65) u^2 P_c        COMPENSATED
- *   unit normal  the error of w~ carried through w / |w|, plus 3 u for the normalisation:
- *                |n~_c - n_c| <= (B_c + |n_c| |B|) / (|w| - |B|) + 3 u |n_c|   when |B| < |w|
+ *   unit normal  the error of w~ carried through w / |w|, plus N u |n_c| for the normalisation
+ *                (N = 4.5 for FAST, which multiplies by a rounded reciprocal, 3.5 otherwise):
+ *                |n~_c - n_c| <= (B_c + |n_c| |B|) / (|w| - |B|) + N u |n_c|   when |B| < |w|
  *                (from n~_c - n_c = (w~_c - w_c) / |w~| + n_c (|w| - |w~|) / |w~|); when
  *                |B| >= |w| the bound allows any unit normal or the zero normal.
  *   length       |L~ - |w|| <= |B| + 3 u |w|
@@ -82,6 +83,14 @@ const char* ModeName(Accuracy mode)
 double UnitRoundoff(Accuracy mode)
 {
   return mode == Accuracy::Fast ? 0x1p-24 : 0x1p-53;
+}
+
+/// The normalisation's share of a unit-normal component's error, in units of u |n_c|: |w| from
+/// a rounded sum of squares and a square root (2.5 u), then a division (1 u), or for FAST a
+/// rounded reciprocal and a product (2 u).
+double NormalisationUlps(Accuracy mode)
+{
+  return mode == Accuracy::Fast ? 4.5 : 3.5;
 }
 
 //------------------------------------------------------------------------------
@@ -524,8 +533,9 @@ Measurement Measure(Accuracy mode, const AreaVector& r, const Truth& t)
     for (int c = 0; c < 3; ++c)
     {
       const mpf_class n(abs(t.Normal[c]), bits);
-      const mpf_class normalBound(
-        (bound[c] + n * boundNorm) / denominator + 3 * u * n + UnderflowUnit(mode), bits);
+      const mpf_class normalBound((bound[c] + n * boundNorm) / denominator +
+          NormalisationUlps(mode) * u * n + UnderflowUnit(mode),
+        bits);
       const mpf_class error(abs(Mpf(r.Normal[c]) - t.Normal[c]), bits);
       m.NormalRatio = std::max(m.NormalRatio, Ratio(error, normalBound));
     }
