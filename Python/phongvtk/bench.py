@@ -328,7 +328,9 @@ def format_ladder(rows, repeats, sample):
     lines = [
         f"vtkPolygonNormals speed/accuracy ladder (cell normals; SMP backend "
         f"{vtkSMPTools.GetBackend()}, {vtkSMPTools.GetEstimatedNumberOfThreads()} threads; "
-        f"time = median of {repeats} runs, ratio to DOUBLE in the same run)",
+        f"time = median of {repeats} samples after a warm-up, the modes taking turns, each "
+        f"sample a batch of runs of at least {1e3 * MIN_SAMPLE_SECONDS:g} ms; ratio to DOUBLE "
+        "in the same run)",
         f"Errors of the unit normals against exact rational arithmetic on up to {sample} "
         "polygons per input: largest component in ulps of the output precision ((f) float, "
         "(d) double), and the angle in radians.",
