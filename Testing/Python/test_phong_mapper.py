@@ -29,6 +29,20 @@ def no_display(monkeypatch):
     monkeypatch.delenv("PHONGVTK_HEADLESS", raising=False)
 
 
+def rendered_pixels(renderer):
+    """The RGB pixels (SIZE * SIZE x 3, bottom row first) of `renderer` drawn in a window of its
+    own: headless, as there is no display."""
+    window = vtkRenderWindow()
+    window.AddRenderer(renderer)
+    window.SetSize(SIZE, SIZE)
+    window.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGB()
+    grab.Update()
+    return numpy_support.vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
+
+
 def render(interpolation, specular=0.4, composite=False):
     sphere = vtkSphereSource()
     sphere.SetThetaResolution(128)
@@ -68,16 +82,7 @@ def render(interpolation, specular=0.4, composite=False):
     camera.SetViewUp(0, 0, 1)
     camera.SetParallelProjection(True)
     camera.SetParallelScale(0.6)
-    window = vtkRenderWindow()
-    window.AddRenderer(renderer)
-    window.SetSize(SIZE, SIZE)
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGB()
-    grab.Update()
-    pixels = numpy_support.vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
-    return mapper, pixels.reshape(SIZE, SIZE, 3).astype(float)
+    return mapper, rendered_pixels(renderer).reshape(SIZE, SIZE, 3).astype(float)
 
 
 @pytest.mark.parametrize("composite", [False, True])
@@ -132,15 +137,7 @@ def render_preset(preset, colour, scene_ambient):
     actor.GetProperty().SetInterpolationToPhong()
     renderer = vtkRenderer()
     renderer.AddActor(actor)
-    window = vtkRenderWindow()
-    window.AddRenderer(renderer)
-    window.SetSize(SIZE, SIZE)
-    window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGB()
-    grab.Update()
-    pixels = numpy_support.vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())
+    pixels = rendered_pixels(renderer)
     return pixels[np.any(pixels != pixels[0], axis=1)].astype(int)
 
 
