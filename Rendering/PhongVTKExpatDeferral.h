@@ -5,8 +5,9 @@
  * enough new input has arrived (the fix of CVE-2023-52425; Debian 12 backports it into
  * 2.5.0-1+deb12u2 and later). VTK 9.1/9.2's vtkXMLDataParser learns that it has reached a file's
  * AppendedData section from the element handler expat calls for it, and feeds the rest of that
- * tag a few bytes at a time: with deferral the handler has not run when VTK reads on, the raw
- * binary data reaches expat ("not well-formed (invalid token)"), and the reader returns no cells.
+ * tag a few bytes at a time: with deferral the handler has not run when VTK reads on, the
+ * appended data reaches expat as if it were XML ("not well-formed (invalid token)"), and the
+ * reader returns no cells.
  * Appended data is vtkXMLWriter's default mode, so this loses most .vtp/.vtu files; ParaView
  * 5.11's own ranks exchange data that way (RedistributeDataSet under MPI hangs on it).
  *

@@ -7,6 +7,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdint>
 #include <cstring>
 #endif
@@ -52,8 +53,11 @@ void RouteInObject(const dl_phdr_info* info, Request& request)
     }
     else if (ph.p_type == PT_GNU_RELRO)
     {
-      relroStart = info->dlpi_addr + ph.p_vaddr;
-      relroEnd = relroStart + ph.p_memsz;
+      // The dynamic linker makes read-only only the whole pages of this range: a partial last
+      // page stays writable (it may hold the lazily bound GOT) and must not be touched here.
+      const ElfW(Addr) page = static_cast<ElfW(Addr)>(sysconf(_SC_PAGESIZE));
+      relroStart = (info->dlpi_addr + ph.p_vaddr) & ~(page - 1);
+      relroEnd = (info->dlpi_addr + ph.p_vaddr + ph.p_memsz) & ~(page - 1);
     }
   }
   if (!dynamic)
@@ -115,6 +119,8 @@ void RouteInObject(const dl_phdr_info* info, Request& request)
           info->dlpi_name + " writable";
         continue;
       }
+      // What the replacement reads (the original function) is stored before the slot is.
+      std::atomic_thread_fence(std::memory_order_release);
       *reinterpret_cast<void**>(slot) = request.Replacement;
       if (readOnly)
       {

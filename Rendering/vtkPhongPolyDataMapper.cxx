@@ -37,7 +37,7 @@ void vtkPhongPolyDataMapper::ApplyPreset(vtkProperty* property, int preset)
                                                       << "or MATTE (2).");
     return;
   }
-  // Coefficients chosen so that ambient + diffuse stay below 1 under one white light of
+  // Coefficients chosen so that ambient + diffuse stay at most 1 under one white light of
   // intensity 1 (VTK's headlight) and under ParaView's light kit, whose lights add up to about
   // that on a surface facing the viewer; only the core of a highlight saturates.
   struct Coefficients

@@ -86,7 +86,7 @@ public:
    * ka = kd as colours (AmbientColor = DiffuseColor = C) with the ambient coefficient 0.1: the
    * ambient light's strength, whether it is the renderer's (VTK's and
    * ParaView's default (1, 1, 1)) or derived from the scene (SceneAmbient). Ambient + diffuse
-   * stay below 1 under VTK's headlight and ParaView's light kit; only highlights saturate.
+   * stay at most 1 under VTK's headlight and ParaView's light kit; only highlights saturate.
    * - PLASTIC: Diffuse 0.8, white highlight (SpecularColor white, Specular 0.3, SpecularPower 30);
    * - METAL: Diffuse 0.45, highlight tinted by the surface (SpecularColor C, Specular 0.6,
    *   SpecularPower 60);

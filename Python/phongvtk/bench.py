@@ -246,9 +246,9 @@ MIN_SAMPLE_SECONDS = 0.02
 
 def median_times(filters, repeats):
     """Median seconds of one Update() per filter. Every filter is warmed up first (allocation,
-    first touch of the input and output), then each sample times a batch of runs long enough to
-    measure (the same batch for every filter); the filters take turns, starting with a different
-    one each round, so that the machine's drift and noise fall on all of them alike."""
+    first touch of the input and output), then each sample times a batch of runs of that filter
+    long enough to measure; the filters take turns, starting with a different one each round,
+    so that the machine's drift and noise fall on all of them alike."""
 
     def run(normals, count):
         start = time.perf_counter()
@@ -257,15 +257,16 @@ def median_times(filters, repeats):
             normals.Update()
         return (time.perf_counter() - start) / count
 
-    slowest = 0.0
+    once = {}
     for _ in range(2):  # the first round allocates; the second is what a run costs
-        slowest = max(run(normals, 1) for normals in filters.values())
-    batch = max(1, math.ceil(MIN_SAMPLE_SECONDS / max(slowest, 1e-9)))
+        once = {mode: run(normals, 1) for mode, normals in filters.items()}
+    batches = {mode: max(1, math.ceil(MIN_SAMPLE_SECONDS / max(seconds, 1e-9)))
+               for mode, seconds in once.items()}
     times = {mode: [] for mode in filters}
     order = list(filters)
     for round_ in range(repeats):
         for mode in order[round_ % len(order):] + order[:round_ % len(order)]:
-            times[mode].append(run(filters[mode], batch))
+            times[mode].append(run(filters[mode], batches[mode]))
     return {mode: statistics.median(values) for mode, values in times.items()}
 
 

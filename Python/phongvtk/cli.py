@@ -364,7 +364,7 @@ def bench_settings(args):
 
 
 def the_mesh(args, progress):
-    """(mesh, label): --mesh, else CGAL's bunny, else a parametric torus."""
+    """(mesh, label): --mesh, else CGAL's bunny, else a torus."""
     if args.mesh:
         return read_mesh(args.mesh, progress), os.path.basename(args.mesh)
     return default_mesh(progress)
@@ -613,10 +613,11 @@ def build_parser():
 
     demo = commands.add_parser(
         "demo", help="the bunny coarse and whole, flat, Gouraud and Phong; both tables",
-        description="Render a real mesh (CGAL's bunny from Debian's libcgal-demo; a parametric "
+        description="Render a real mesh (CGAL's bunny from Debian's libcgal-demo; a "
                     "torus when it is not installed) flat, Gouraud and Phong side by side, "
-                    "decimated to a few thousand triangles (top row: where the shading modes "
-                    "differ plainly) and whole (bottom row), into one PNG; then print the "
+                    "decimated to a few thousand triangles (where the shading modes differ "
+                    "plainly) and, in the fourth panel, whole; below it a coarse torus the same "
+                    "way beside a fine one; into one PNG; then print the "
                     "normals ladder of that mesh and the shading error against tessellation "
                     "(as bench does).")
     demo.add_argument("-o", "--output", default="phongvtk-demo.png", metavar="PNG",
@@ -635,7 +636,7 @@ def build_parser():
 def add_bench_options(parser):
     """The normals ladder's options (bench and demo)."""
     parser.add_argument("--mesh", metavar="MESH",
-                        help="the mesh (default: CGAL's bunny, else a parametric torus)")
+                        help="the mesh (default: CGAL's bunny, else a torus)")
     parser.add_argument("--quick", action="store_true",
                         help="a small, fast version (a few seconds)")
     parser.add_argument("--repeats", type=positive_int, metavar="N",

@@ -8,9 +8,8 @@ strips). CGAL's bunny comes from Debian's libcgal-demo archive (:func:`cgal_mesh
 torus stands in when the archive is absent (:func:`default_mesh`).
 """
 
+import contextlib
 import os
-import subprocess
-import sys
 import tarfile
 import tempfile
 
@@ -26,7 +25,7 @@ from vtkmodules.vtkIOPLY import vtkPLYReader, vtkPLYWriter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 
 from .errors import CommandError
-from .progress import Progress
+from .progress import Progress, vtk_output_captured
 
 #: Extensions read by VTK's readers (lower case), and the reader of each.
 VTK_READERS = {
@@ -102,42 +101,26 @@ def read_mesh(path, progress=None):
     return mesh
 
 
-#: A VTK program that reads an XML document with appended data from memory and prints how many
-#: points it found: VTK before 9.3.1 finds none when expat defers reparsing (expat >= 2.6.0, or
-#: Debian 12's backport in 2.5.0-1+deb12u2 and later) unless PhongVTK's module turned that off.
-APPENDED_XML_PROBE = """
-import numpy as np
-from vtkmodules.util import numpy_support
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
-points = vtkPoints()
-points.SetData(numpy_support.numpy_to_vtk(np.random.default_rng(1).random((4000, 3)), deep=1))
-mesh = vtkPolyData()
-mesh.SetPoints(points)
-writer = vtkXMLPolyDataWriter()
-writer.SetInputData(mesh)
-writer.SetCompressorTypeToNone()
-writer.WriteToOutputStringOn()
-writer.Write()
-reader = vtkXMLPolyDataReader()
-reader.ReadFromInputStringOn()
-reader.SetInputString(writer.GetOutputString())
-reader.Update()
-print(reader.GetOutput().GetNumberOfPoints())
-"""
-
-
 def vtk_reads_appended_xml():
-    """Whether this VTK without PhongVTK reads XML appended data on this machine (asked of a
-    Python process of its own, which has not loaded PhongVTK's fix)."""
-    env = {key: value for key, value in os.environ.items() if key != "PYTHONPATH"}
-    try:
-        result = subprocess.run([sys.executable, "-c", APPENDED_XML_PROBE], env=env,
-                                capture_output=True, text=True, timeout=60)
-    except (OSError, subprocess.SubprocessError):
-        return True  # cannot tell: blame nothing
-    return result.returncode != 0 or result.stdout.split()[-1:] == ["4000"]
+    """Whether VTK's XML reader, as this process has it now, reads appended data longer than one
+    of its reads: VTK before 9.3.1 does not when the system's expat defers reparsing (expat >=
+    2.6.0, or Debian 12's backport in 2.5.0-1+deb12u2 and later) unless PhongVTK's module turned
+    deferral off (see PhongVTKExpatDeferral.h), which importing phongvtk does when needed."""
+    points = vtkPoints()
+    points.SetData(numpy_support.numpy_to_vtk(np.random.default_rng(1).random((4000, 3)), deep=1))
+    mesh = vtkPolyData()
+    mesh.SetPoints(points)
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(mesh)
+    writer.SetCompressorTypeToNone()
+    writer.WriteToOutputStringOn()
+    writer.Write()
+    reader = vtkXMLPolyDataReader()
+    reader.ReadFromInputStringOn()
+    reader.SetInputString(writer.GetOutputString())
+    with vtk_output_captured():  # a failure here is an answer, not a message
+        reader.Update()
+    return reader.GetOutput().GetNumberOfPoints() == 4000
 
 
 def explain_appended_data(path, error):
@@ -146,7 +129,7 @@ def explain_appended_data(path, error):
     with open(path, "rb") as file:
         head = file.read(1 << 20)
     if b"<AppendedData" not in head or vtk_reads_appended_xml():
-        return
+        return  # this VTK reads appended data: the file itself is the problem
     keep = os.environ.get("PHONGVTK_KEEP_EXPAT_DEFERRAL", "")
     cause = ("PHONGVTK_KEEP_EXPAT_DEFERRAL is set, which leaves the system's expat as it is"
              if keep and keep != "0" else "PhongVTK could not turn it off here")
@@ -190,11 +173,16 @@ SNIFFERS = {".ply": check_ply_header, ".stl": check_stl_size}
 
 
 def check_output(path, extensions):
-    """Raises CommandError unless `path` ends with one of `extensions` (checked before any
-    work, so that a typo does not cost a long computation)."""
+    """Raises CommandError unless `path` ends with one of `extensions` and names a file that can
+    be made (checked before any work, so that a typo does not cost a long computation)."""
     if extension(path) not in extensions:
         raise CommandError(f"'{path}': cannot write '{extension(path) or '(none)'}' files "
                            f"(known: {' '.join(extensions)})")
+    target = os.path.realpath(path)
+    if os.path.isdir(target):
+        raise CommandError(f"cannot write '{path}': it is a directory")
+    if not os.path.isdir(os.path.dirname(target)):
+        raise CommandError(f"cannot write '{path}': no such directory")
 
 
 def check_surface(mesh, path):
@@ -360,26 +348,44 @@ def read_off(path, progress=None):
 
 
 def write_atomically(writer, path, progress):
-    """Runs the VTK `writer` into a temporary file beside `path`, then renames it to `path`: a
-    reader never sees half a file, and a failed write leaves an existing `path` as it was."""
-    directory = os.path.dirname(os.path.abspath(path))
-    if not os.path.isdir(directory):
-        raise CommandError(f"cannot write '{path}': no such directory")
-    partial = os.path.join(directory, f".{os.path.basename(path)}.{os.getpid()}.part")
-    writer.SetFileName(partial)
+    """Runs the VTK `writer` into a new temporary file beside `path` (through a symbolic link: its
+    target), then renames it to `path`: a reader never sees half a file, and a failed write
+    leaves an existing `path` as it was. The file gets the mode an existing one had, else the
+    usual one (0666 less the umask)."""
+    target = os.path.realpath(path)
+    directory = os.path.dirname(target)
     try:
-        progress.run(writer, f"write {os.path.basename(path)}", f"cannot write '{path}'",
-                     "Write")
-        # Some writers (vtkPNGWriter) report a file they cannot open through the error code.
-        if (hasattr(writer, "GetErrorCode") and writer.GetErrorCode()) or \
-                not os.path.isfile(partial):
-            raise CommandError(f"cannot write '{path}'")
-        os.replace(partial, path)
+        handle, partial = tempfile.mkstemp(dir=directory, prefix=f".{os.path.basename(target)}.",
+                                           suffix=".part")
+        os.close(handle)
+    except OSError as error:
+        raise CommandError(f"cannot write '{path}': {error.strerror}") from None
+    try:
+        writer.SetFileName(partial)
+        what = f"cannot write '{path}'"
+        progress.run(writer, f"write {os.path.basename(path)}", what, "Write")
+        # Some writers (vtkPNGWriter) report a file they cannot write through the error code.
+        if hasattr(writer, "GetErrorCode") and writer.GetErrorCode():
+            raise CommandError(what)
+        with open(partial, "rb") as file:
+            os.fsync(file.fileno())
+        os.chmod(partial, usual_mode(target))
+        os.replace(partial, target)
     except OSError as error:
         raise CommandError(f"cannot write '{path}': {error.strerror}") from None
     finally:
-        if os.path.exists(partial):
+        with contextlib.suppress(OSError):
             os.remove(partial)
+
+
+def usual_mode(path):
+    """The permission bits of the existing file `path`, else 0666 less the process's umask."""
+    try:
+        return os.stat(path).st_mode & 0o7777
+    except OSError:
+        umask = os.umask(0)
+        os.umask(umask)
+        return 0o666 & ~umask
 
 
 def write_mesh(mesh, path, progress=None):

@@ -79,9 +79,9 @@ double Median(std::vector<double> v)
 }
 
 /// Median seconds of one Update() of each filter: every filter is warmed up (allocation, first
-/// touch), then each sample times a batch of runs long enough to measure (the same batch for every
-/// filter), and the filters take turns starting with a different one each round, so that the
-/// machine's drift and noise fall on all of them alike and the ranking is the real one.
+/// touch), then each sample times a batch of runs of that filter long enough to measure, and the
+/// filters take turns starting with a different one each round, so that the machine's drift and
+/// noise fall on all of them alike and the ranking is the real one.
 std::vector<double> InterleavedMedians(
   std::vector<vtkSmartPointer<vtkPolygonNormals>>& filters, int runs)
 {
@@ -95,24 +95,23 @@ std::vector<double> InterleavedMedians(
     }
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / count;
   };
-  double slowest = 0.0;
+  const std::size_t n = filters.size();
+  std::vector<int> batches(n, 1);
   for (int round = 0; round < 2; ++round) // the first allocates; the second is a run's cost
   {
-    slowest = 0.0;
-    for (auto& filter : filters)
+    for (std::size_t f = 0; f < n; ++f)
     {
-      slowest = std::max(slowest, time(filter, 1));
+      const double once = time(filters[f], 1);
+      batches[f] = std::max(1, static_cast<int>(std::ceil(0.02 / std::max(once, 1e-9))));
     }
   }
-  const int batch = std::max(1, static_cast<int>(std::ceil(0.02 / std::max(slowest, 1e-9))));
-  const std::size_t n = filters.size();
   std::vector<std::vector<double>> times(n);
   for (int r = 0; r < runs; ++r)
   {
     for (std::size_t k = 0; k < n; ++k)
     {
       const std::size_t f = (k + static_cast<std::size_t>(r)) % n;
-      times[f].push_back(time(filters[f], batch));
+      times[f].push_back(time(filters[f], batches[f]));
     }
   }
   std::vector<double> medians;

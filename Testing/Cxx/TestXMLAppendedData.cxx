@@ -77,14 +77,18 @@ TEST(ExpatDeferral, VTKReadsAppendedDataOnceTheModuleIsLoaded)
   }
   else
   {
-    EXPECT_EQ(state, phongvtk::ExpatDeferral::Absent) << problem;
+    const bool fixedByVTK = VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 1);
+    EXPECT_EQ(
+      state, fixedByVTK ? phongvtk::ExpatDeferral::NotNeeded : phongvtk::ExpatDeferral::Absent)
+      << problem;
   }
   EXPECT_TRUE(phongvtk::VTKReadsAppendedXML());
 }
 
 // The case the fix exists for, in a child process that loads the module with the fix declined:
 // VTK then fails exactly when the module said it needed the fix, and ParaView 5.11's VTK 9.2
-// (which Debian has not patched) needs it wherever expat defers.
+// needs it wherever expat defers (Debian 12 has not patched it, as it has its VTK 9.1: should it,
+// this test says so, and the fix is no longer needed there).
 TEST(ExpatDeferral, WithoutTheFixVTKFailsExactlyWhereTheFixIsNeeded)
 {
   GTEST_FLAG_SET(death_test_style, "threadsafe"); // the child runs this binary anew

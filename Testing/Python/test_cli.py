@@ -565,7 +565,8 @@ def read_with_plain_vtk(path):
 
 
 def write_appended_vtp(path, mesh):
-    """`mesh` in vtkXMLPolyDataWriter's default mode (appended raw data, compressed)."""
+    """`mesh` in vtkXMLPolyDataWriter's default mode (appended data, base64-encoded and
+    compressed)."""
     writer = vtkXMLPolyDataWriter()
     writer.SetInputData(mesh)
     writer.SetFileName(str(path))
@@ -579,6 +580,30 @@ def test_normals_writes_vtp_that_vtk_without_phongvtk_reads(phongvtk_cli, sphere
     assert read_with_plain_vtk(tmp_path / "out.vtp") == (len(points), len(faces), 2)
     assert "<AppendedData" not in (tmp_path / "out.vtp").read_text(errors="replace")
     assert sorted(os.listdir(tmp_path)) == ["out.vtp", "sphere.off"]  # no temporary left
+
+
+def test_output_replaces_an_existing_file_keeping_its_mode_and_writes_through_links(
+        phongvtk_cli, sphere_off, tmp_path):
+    (tmp_path / "kept").mkdir()
+    old = tmp_path / "kept" / "out.vtp"
+    old.write_text("an older result")
+    old.chmod(0o640)
+    (tmp_path / "link.vtp").symlink_to(old)
+    result = phongvtk_cli("normals", sphere_off, "-o", "link.vtp")
+    assert result.returncode == 0, result.stderr
+    assert (tmp_path / "link.vtp").is_symlink()
+    assert read_vtp(old).GetNumberOfPolys() == len(uv_sphere()[1])
+    assert old.stat().st_mode & 0o777 == 0o640
+    assert os.listdir(tmp_path / "kept") == ["out.vtp"]
+
+
+def test_output_onto_a_directory_is_a_clean_error_that_leaves_nothing(phongvtk_cli, sphere_off,
+                                                                      tmp_path):
+    (tmp_path / "out.vtp").mkdir()
+    expect_clean_error(phongvtk_cli("normals", sphere_off, "-o", "out.vtp"), "out.vtp",
+                       "directory")
+    assert sorted(os.listdir(tmp_path)) == ["out.vtp", "sphere.off"]
+    assert os.listdir(tmp_path / "out.vtp") == []
 
 
 def test_appended_vtp_input_is_read_whole(phongvtk_cli, sphere_off, tmp_path):
