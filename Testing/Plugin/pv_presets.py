@@ -12,8 +12,8 @@ import json
 import sys
 
 import numpy as np
-from paraview.simple import (GetActiveViewOrCreate, LoadPlugin, Render, SaveScreenshot, Show,
-                             Sphere)
+from paraview.simple import LoadPlugin, Render, SaveScreenshot, Show, Sphere
+from pv_scene import dark_render_view
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
@@ -21,13 +21,7 @@ from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
 plugin, output = sys.argv[1:3]
 size = int(sys.argv[3]) if len(sys.argv) > 3 else 200
 LoadPlugin(plugin, remote=False, ns=globals())
-view = GetActiveViewOrCreate("RenderView")
-view.OrientationAxesVisibility = 0
-view.Background = [0.1, 0.1, 0.15]
-try:  # ParaView 5.11 takes the background from the colour palette unless told otherwise
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = dark_render_view()
 sphere = PolygonNormals(Input=Sphere(ThetaResolution=64, PhiResolution=32), ComputePointNormals=1)
 display = Show(sphere, view)
 display.DiffuseColor = [0.2, 0.5, 1.0]

@@ -5,17 +5,11 @@ renders through PhongVTK's headless window and SaveScreenshot writes the image.
 """
 import sys
 
-from paraview.simple import (GetActiveViewOrCreate, LoadPlugin, Render,
-                             SaveScreenshot, Show, Sphere)
+from paraview.simple import LoadPlugin, Render, SaveScreenshot, Show, Sphere
+from pv_scene import dark_render_view
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())  # adds the plugin's proxies here
-view = GetActiveViewOrCreate("RenderView")
-view.OrientationAxesVisibility = 0
-view.Background = [0.1, 0.1, 0.15]
-try:  # ParaView 5.11 takes the background from the colour palette unless told otherwise
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = dark_render_view()
 sphere = Sphere(ThetaResolution=24, PhiResolution=16, Radius=1.0)
 normals = PolygonNormals(Input=sphere, ComputePointNormals=1, Accuracy="Exact")
 display = Show(normals, view)
