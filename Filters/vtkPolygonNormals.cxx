@@ -3,6 +3,7 @@
 #include "PhongVTKAreaVector.h"
 #include "PhongVTKCells.h"
 #include "PhongVTKOptions.h"
+#include "PhongVTKPointSums.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -35,7 +36,9 @@ namespace
 {
 using phongvtk::Accuracy;
 using phongvtk::AreaVector;
+using phongvtk::InvariantSums;
 using phongvtk::RawCells;
+using phongvtk::ScaledSum;
 using phongvtk::ValidIds;
 
 /// Per-thread bookkeeping of a pass over the cells.
@@ -256,80 +259,6 @@ struct AreaVectorWorker
 };
 
 /**
- * A point normal sum with a binary exponent of its own: the value is S * 2^E. Contributions of
- * any scale add without overflow or underflow; when every exponent is zero (faces of ordinary
- * size) the additions are exactly those of a plain double sum.
- */
-struct ScaledSum
-{
-  double S[3] = { 0.0, 0.0, 0.0 };
-  int E = 0;
-
-  PHONGVTK_INLINE void Add(const double v[3], int e)
-  {
-    if (e != this->E)
-    {
-      this->AddScaled(v, e);
-      return;
-    }
-    // Contributions lie below 2^500 and the sum is renormalised below 2^500 whenever exponents
-    // differ, so plain additions (the common case) cannot overflow.
-    for (int c = 0; c < 3; ++c)
-    {
-      this->S[c] += v[c];
-    }
-  }
-
-  /// Adds v * 2^e when e differs from the sum's exponent: the smaller of the two is scaled to
-  /// the larger one's exponent (and may vanish: it is then negligible).
-  void AddScaled(const double v[3], int e)
-  {
-    using phongvtk::detail::Scale2;
-    if (this->S[0] == 0.0 && this->S[1] == 0.0 && this->S[2] == 0.0)
-    {
-      std::copy(v, v + 3, this->S);
-      this->E = e;
-    }
-    else if (e > this->E)
-    {
-      const int d = std::max(this->E - e, -2200);
-      for (int c = 0; c < 3; ++c)
-      {
-        this->S[c] = Scale2(Scale2(this->S[c], d / 2), d - d / 2) + v[c];
-      }
-      this->E = e;
-    }
-    else
-    {
-      const int d = std::max(e - this->E, -2200);
-      for (int c = 0; c < 3; ++c)
-      {
-        this->S[c] += Scale2(Scale2(v[c], d / 2), d - d / 2);
-      }
-    }
-    this->Renormalize();
-  }
-
-  void Renormalize()
-  {
-    const double m = phongvtk::detail::MaxAbs3(this->S);
-    if (!(m <= 0x1p500) || (m < 0x1p-500 && m != 0.0))
-    {
-      if (!std::isfinite(m))
-      {
-        return;
-      }
-      const int k = phongvtk::detail::Exponent2(m);
-      for (double& x : this->S)
-      {
-        x = phongvtk::detail::Scale2(x, -k);
-      }
-      this->E += k;
-    }
-  }
-};
-
-/**
  * The edge from v to q scaled by 2^-k so that its largest component lies in [1, 2); returns k,
  * or INT_MIN for a zero edge. Coordinates whose difference overflows are halved first.
  */
@@ -362,55 +291,17 @@ inline int ScaledEdge(const T* q, const T* v, double e[3])
   return k + extra;
 }
 
-/// One face's contribution to a point normal: `V * 2^E`, and the next contribution to the same
-/// point (-1: none).
-struct Contribution
-{
-  double V[3];
-  int E;
-  std::int32_t Next;
-};
-
-/// A key whose integer order is the order of the doubles, -0 before +0 (a total order on the
-/// finite values, all a contribution holds).
-inline std::int64_t OrderKey(double x)
-{
-  std::int64_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  return bits < 0 ? bits ^ std::numeric_limits<std::int64_t>::max() : bits;
-}
-
-/// The order in which a point's contributions are added: by exponent, then by value.
-inline bool FoldsBefore(const Contribution& a, const Contribution& b)
-{
-  if (a.E != b.E)
-  {
-    return a.E < b.E;
-  }
-  for (int c = 0; c < 3; ++c)
-  {
-    const std::int64_t ka = OrderKey(a.V[c]);
-    const std::int64_t kb = OrderKey(b.V[c]);
-    if (ka != kb)
-    {
-      return ka < kb;
-    }
-  }
-  return false;
-}
-
 /**
  * The points [First, First + Count) whose normals one task of the point pass computes. A face
  * adds its contribution to the corners inside the range only: to their sums, in cell order, or,
- * piece-invariant, to one list per point that NormalizeSums then adds in a fixed order.
+ * piece-invariant, to sums that do not depend on the order (InvariantSums).
  */
 struct PointRange
 {
   vtkIdType First = 0;
   vtkIdType Count = 0;
-  ScaledSum* Sums = nullptr;                  // in cell order, or
-  std::int32_t* Heads = nullptr;              // the first contribution of each point's list
-  std::vector<Contribution>* Items = nullptr; // the contributions
+  ScaledSum* Sums = nullptr;          // in cell order, or
+  InvariantSums* Invariant = nullptr; // independent of the order
 
   bool Contains(vtkIdType id) const
   {
@@ -425,9 +316,7 @@ struct PointRange
       this->Sums[id - this->First].Add(v, e);
       return;
     }
-    std::int32_t& head = this->Heads[id - this->First];
-    this->Items->push_back(Contribution{ { v[0], v[1], v[2] }, e, head });
-    head = static_cast<std::int32_t>(this->Items->size() - 1);
+    this->Invariant->Add(static_cast<std::int32_t>(id - this->First), v, e);
   }
 };
 
@@ -500,12 +389,11 @@ void ScatterFace(int weighting, const T* pts, const VertexIdFn& vertexId, std::i
 
 /// The unit normal of a sum (zero for a zero or non-finite sum).
 template <class O>
-void WriteNormal(const ScaledSum& sum, O* normal)
+void WriteNormal(const double s[3], O* normal)
 {
   double unit[3] = { 0.0, 0.0, 0.0 };
   double length;
   int k;
-  const double* s = sum.S;
   if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]))
   {
     phongvtk::detail::NormalizeDouble(s, unit, length, k);
@@ -517,9 +405,9 @@ void WriteNormal(const ScaledSum& sum, O* normal)
 }
 
 /**
- * The unit normals of a range's points. Piece-invariant, each point's contributions are added
- * in the order FoldsBefore, a function of their values alone: the sum is the same whatever the
- * order of the cells or their partition among processes.
+ * The unit normals of a range's points. Piece-invariant, each point's sum is a function of the
+ * set of its contributions alone: the same whatever the order of the cells or their partition
+ * among processes.
  */
 template <class O>
 void NormalizeSums(const PointRange& range, O* normals)
@@ -528,37 +416,12 @@ void NormalizeSums(const PointRange& range, O* normals)
   {
     for (vtkIdType i = 0; i < range.Count; ++i)
     {
-      WriteNormal(range.Sums[i], normals + 3 * (range.First + i));
+      WriteNormal(range.Sums[i].S, normals + 3 * (range.First + i));
     }
     return;
   }
-  const std::vector<Contribution>& items = *range.Items;
-  std::vector<const Contribution*> star;
-  for (vtkIdType i = 0; i < range.Count; ++i)
-  {
-    star.clear();
-    for (std::int32_t k = range.Heads[i]; k >= 0; k = items[static_cast<std::size_t>(k)].Next)
-    {
-      star.push_back(&items[static_cast<std::size_t>(k)]);
-    }
-    // A handful of faces meet at a point: insertion sort.
-    for (std::size_t j = 1; j < star.size(); ++j)
-    {
-      const Contribution* c = star[j];
-      std::size_t k = j;
-      for (; k > 0 && FoldsBefore(*c, *star[k - 1]); --k)
-      {
-        star[k] = star[k - 1];
-      }
-      star[k] = c;
-    }
-    ScaledSum sum;
-    for (const Contribution* c : star)
-    {
-      sum.Add(c->V, c->E);
-    }
-    WriteNormal(sum, normals + 3 * (range.First + i));
-  }
+  range.Invariant->Finish([&](std::int32_t i, const double sum[3], int)
+    { WriteNormal(sum, normals + 3 * (range.First + i)); });
 }
 
 /// Smallest and largest point id used by a block of polygons (empty: First > Last).
@@ -814,8 +677,7 @@ private:
     struct Buffers
     {
       std::vector<ScaledSum> Sums;
-      std::vector<std::int32_t> Heads;
-      std::vector<Contribution> Items;
+      InvariantSums Invariant;
     };
     vtkSMPThreadLocal<Buffers> localBuffers;
     vtkCellArray* strips = this->Input->GetStrips();
@@ -830,10 +692,8 @@ private:
           range.Count = std::min(rangeSize, this->NumberOfPoints - range.First);
           if (this->PieceInvariant)
           {
-            buffers.Heads.assign(static_cast<std::size_t>(range.Count), -1);
-            buffers.Items.clear();
-            range.Heads = buffers.Heads.data();
-            range.Items = &buffers.Items;
+            buffers.Invariant.Reset(static_cast<std::size_t>(range.Count));
+            range.Invariant = &buffers.Invariant;
           }
           else
           {

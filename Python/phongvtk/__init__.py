@@ -14,5 +14,8 @@ phongvtk.cli).
 #: The version of PhongVTK (project(VERSION) in the top-level CMakeLists.txt).
 __version__ = "0.1.0"
 
+from ._build import RENDERING
 from .vtkPhongVTKFilters import *  # noqa: F401,F403
-from .vtkPhongVTKRendering import *  # noqa: F401,F403
+
+if RENDERING:  # built against VTK 9.1/9.2 (PHONGVTK_BUILD_RENDERING)
+    from .vtkPhongVTKRendering import *  # noqa: F401,F403
