@@ -1148,6 +1148,23 @@ PHONGVTK_INLINE void Cross4(const Lane a[3], const Lane b[3], Lane w[3])
   }
 }
 
+/**
+ * DOUBLE's area vectors of four triangles, without their normals; a lane is complete (as the
+ * per-polygon kernel would leave it, exponent 0) where InWindow(w, 2^-500, 2^500) holds.
+ */
+template <class T>
+PHONGVTK_INLINE void DoubleAreaVectors4(const T* const corner[3][4], V4 w[3])
+{
+  V4 a[3], b[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    const V4 p0 = GatherAxis<V4>(corner[0], c);
+    a[c] = GatherAxis<V4>(corner[1], c) - p0;
+    b[c] = GatherAxis<V4>(corner[2], c) - p0;
+  }
+  Cross4(a, b, w);
+}
+
 /// DOUBLE's (and COMPENSATED's) completion of in-window area vectors: w / |w|.
 PHONGVTK_INLINE void NormalizeDouble4(const V4 w[3], TriangleLanes& out)
 {
@@ -1193,14 +1210,8 @@ PHONGVTK_INLINE void FastTriangles4(const T* const corner[3][4], TriangleLanes& 
 template <class T>
 PHONGVTK_INLINE void DoubleTriangles4(const T* const corner[3][4], TriangleLanes& out)
 {
-  V4 a[3], b[3], w[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    const V4 p0 = GatherAxis<V4>(corner[0], c);
-    a[c] = GatherAxis<V4>(corner[1], c) - p0;
-    b[c] = GatherAxis<V4>(corner[2], c) - p0;
-  }
-  Cross4(a, b, w);
+  V4 w[3];
+  DoubleAreaVectors4<T>(corner, w);
   NormalizeDouble4(w, out);
 }
 

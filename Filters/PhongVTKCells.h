@@ -54,6 +54,29 @@ struct RawCells
     fn(state.GetOffsets()->GetPointer(0), state.GetConnectivity()->GetPointer(0));
   }
 };
+/// Pointers to the coordinates of the corners of triangles `cell` ... `cell + 3`.
+template <class T, class Offsets, class Connectivity>
+inline void TriangleCorners(const T* points, const Offsets* offsets,
+  const Connectivity* connectivity, vtkIdType cell, const T* corner[3][4])
+{
+  for (int j = 0; j < 4; ++j)
+  {
+    const Connectivity* ids = connectivity + offsets[cell + j];
+    for (int v = 0; v < 3; ++v)
+    {
+      corner[v][j] = points + 3 * static_cast<std::int64_t>(ids[v]);
+    }
+  }
+}
+
+/// Whether cells cell ... cell + 3 are triangles.
+template <class Offsets>
+inline bool AreFourTriangles(const Offsets* offsets, vtkIdType cell)
+{
+  const Offsets* o = offsets + cell;
+  return o[1] - o[0] == 3 && o[2] - o[1] == 3 && o[3] - o[2] == 3 && o[4] - o[3] == 3;
+}
+
 } // namespace phongvtk
 
 #endif

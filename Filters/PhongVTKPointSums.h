@@ -121,15 +121,26 @@ public:
 
   std::size_t Size() const { return this->Top.size(); }
 
+  /// The exponent Add() needs: that of V's largest component plus E (INT_MIN for a zero V).
+  static PHONGVTK_INLINE int TopOf(const double v[3], int e)
+  {
+    const double m = detail::MaxAbs3(v);
+    return m > 0.0 ? e + detail::Exponent2(m) : INT_MIN;
+  }
+
   /// Records V * 2^E for `point`; a zero vector adds nothing and is not counted.
   PHONGVTK_INLINE void Add(std::int32_t point, const double v[3], int e)
   {
-    const double m = detail::MaxAbs3(v);
-    if (!(m > 0.0))
+    this->Add(point, v, e, TopOf(v, e));
+  }
+
+  /// Add() with TopOf(v, e) already known (one face, several corners).
+  PHONGVTK_INLINE void Add(std::int32_t point, const double v[3], int e, int top)
+  {
+    if (top == INT_MIN)
     {
       return;
     }
-    const int top = e + detail::Exponent2(m);
     int& t = this->Top[static_cast<std::size_t>(point)];
     t = std::max(t, top);
     ++this->Count[static_cast<std::size_t>(point)];
@@ -143,9 +154,9 @@ public:
   template <class WriteFn>
   void Finish(const WriteFn& write)
   {
+    using detail::V4;
     const std::size_t n = this->Size();
-    this->Hi.assign(3 * n, 0.0);
-    this->Lo.assign(3 * n, 0.0);
+    this->Parts.assign(n, Part{});
     this->Grid.resize(n);
     for (std::size_t p = 0; p < n; ++p)
     {
@@ -154,12 +165,32 @@ public:
     for (const Item& item : this->Items)
     {
       const std::size_t p = static_cast<std::size_t>(item.Point);
-      Deposit(item.V, item.E - this->Top[p] - 1, this->Grid[p], &this->Hi[3 * p], &this->Lo[3 * p]);
+      Part& part = this->Parts[p];
+      const Magic m = this->Grid[p];
+      V4 x;
+      const int k = item.E - this->Top[p] - 1;
+      if (k >= -1022 && k <= 1023)
+      {
+        x = V4{ item.V[0], item.V[1], item.V[2], 0.0 } * detail::Pow2(k);
+      }
+      else
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          x[c] = detail::Scale2(item.V[c], k);
+        }
+        x[3] = 0.0;
+      }
+      // fl(x + M) - M is x rounded to M's ulp, a function of x alone (ties to even), and exact.
+      const V4 high = (x + m.High) - m.High;
+      const V4 low = ((x - high) + m.Low) - m.Low;
+      part.Hi += high;
+      part.Lo += low;
     }
     for (std::size_t p = 0; p < n; ++p)
     {
-      const double s[3] = { this->Hi[3 * p] + this->Lo[3 * p],
-        this->Hi[3 * p + 1] + this->Lo[3 * p + 1], this->Hi[3 * p + 2] + this->Lo[3 * p + 2] };
+      const V4 sum = this->Parts[p].Hi + this->Parts[p].Lo;
+      const double s[3] = { sum[0], sum[1], sum[2] };
       write(static_cast<std::int32_t>(p), s, this->Count[p] > 0 ? this->Top[p] + 1 : 0);
     }
   }
@@ -179,31 +210,8 @@ public:
    */
   static Magic GridOf(std::int32_t count)
   {
-    int h = 1;
-    for (std::uint32_t c = static_cast<std::uint32_t>(count); c != 0; c >>= 1)
-    {
-      ++h;
-    }
+    const int h = count > 0 ? 33 - __builtin_clz(static_cast<unsigned>(count)) : 2;
     return Magic{ 0x1.8p0 * detail::Pow2(h - 1), 0x1.8p0 * detail::Pow2(2 * h - 54) };
-  }
-
-  /**
-   * Adds v * 2^k (below 1 in magnitude) to a point's high and low parts, each part rounded by
-   * itself: fl(x + M) - M is x rounded to M's ulp, a function of x alone (ties to even), and
-   * exact to subtract again.
-   */
-  static PHONGVTK_INLINE void Deposit(
-    const double v[3], int k, const Magic& m, double* hi, double* lo)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double x = detail::Scale2(v[c], k);
-      const double high = (x + m.High) - m.High;
-      const double rest = x - high;
-      const double low = (rest + m.Low) - m.Low;
-      hi[c] += high;
-      lo[c] += low;
-    }
   }
 
 private:
@@ -213,11 +221,15 @@ private:
     int E;
     std::int32_t Point;
   };
+  struct Part
+  {
+    detail::V4 Hi = {}, Lo = {}; // the exact sums of the high and of the low parts
+  };
   std::vector<int> Top;            // largest exponent of a contribution's largest component
   std::vector<std::int32_t> Count; // contributions per point
   std::vector<Item> Items;
-  std::vector<double> Hi, Lo;
-  std::vector<Magic> Grid;
+  std::vector<Part> Parts;
+  std::vector<Magic> Grid; // each point's rounding constants
 };
 
 } // namespace phongvtk

@@ -3,7 +3,7 @@
 #include "PhongVTKAreaVector.h"
 #include "PhongVTKCells.h"
 #include "PhongVTKOptions.h"
-#include "PhongVTKPointSums.h"
+#include "PhongVTKPointNormals.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -36,9 +36,9 @@ namespace
 {
 using phongvtk::Accuracy;
 using phongvtk::AreaVector;
-using phongvtk::InvariantSums;
+using phongvtk::AreFourTriangles;
 using phongvtk::RawCells;
-using phongvtk::ScaledSum;
+using phongvtk::TriangleCorners;
 using phongvtk::ValidIds;
 
 /// Per-thread bookkeeping of a pass over the cells.
@@ -94,29 +94,6 @@ inline void WriteCell(const CellOutputs<O>& out, vtkIdType cell, const AreaVecto
   {
     out.Status[cell] = r.Status;
   }
-}
-
-/// Pointers to the coordinates of the corners of triangles `cell` ... `cell + 3`.
-template <class T, class Offsets, class Connectivity>
-inline void TriangleCorners(const T* points, const Offsets* offsets,
-  const Connectivity* connectivity, vtkIdType cell, const T* corner[3][4])
-{
-  for (int j = 0; j < 4; ++j)
-  {
-    const Connectivity* ids = connectivity + offsets[cell + j];
-    for (int v = 0; v < 3; ++v)
-    {
-      corner[v][j] = points + 3 * static_cast<std::int64_t>(ids[v]);
-    }
-  }
-}
-
-/// Whether cells cell ... cell + 3 are triangles.
-template <class Offsets>
-inline bool AreFourTriangles(const Offsets* offsets, vtkIdType cell)
-{
-  const Offsets* o = offsets + cell;
-  return o[1] - o[0] == 3 && o[2] - o[1] == 3 && o[3] - o[2] == 3 && o[4] - o[3] == 3;
 }
 
 /// The unit normals of four cells (component by component, one cell per lane) as 12
@@ -259,179 +236,6 @@ struct AreaVectorWorker
 };
 
 /**
- * The edge from v to q scaled by 2^-k so that its largest component lies in [1, 2); returns k,
- * or INT_MIN for a zero edge. Coordinates whose difference overflows are halved first.
- */
-template <class T>
-inline int ScaledEdge(const T* q, const T* v, double e[3])
-{
-  int extra = 0;
-  for (int c = 0; c < 3; ++c)
-  {
-    e[c] = static_cast<double>(q[c]) - static_cast<double>(v[c]);
-  }
-  if (!std::isfinite(phongvtk::detail::MaxAbs3(e)))
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      e[c] = 0.5 * static_cast<double>(q[c]) - 0.5 * static_cast<double>(v[c]);
-    }
-    extra = 1;
-  }
-  const double m = phongvtk::detail::MaxAbs3(e);
-  if (!(m > 0.0) || !std::isfinite(m))
-  {
-    return INT_MIN;
-  }
-  const int k = phongvtk::detail::Exponent2(m);
-  for (int c = 0; c < 3; ++c)
-  {
-    e[c] = phongvtk::detail::Scale2(e[c], -k);
-  }
-  return k + extra;
-}
-
-/**
- * The points [First, First + Count) whose normals one task of the point pass computes. A face
- * adds its contribution to the corners inside the range only: to their sums, in cell order, or,
- * piece-invariant, to sums that do not depend on the order (InvariantSums).
- */
-struct PointRange
-{
-  vtkIdType First = 0;
-  vtkIdType Count = 0;
-  ScaledSum* Sums = nullptr;          // in cell order, or
-  InvariantSums* Invariant = nullptr; // independent of the order
-
-  bool Contains(vtkIdType id) const
-  {
-    const auto i = static_cast<std::make_unsigned_t<vtkIdType>>(id - this->First);
-    return i < static_cast<std::make_unsigned_t<vtkIdType>>(this->Count);
-  }
-
-  void Add(vtkIdType id, const double v[3], int e) const
-  {
-    if (this->Sums)
-    {
-      this->Sums[id - this->First].Add(v, e);
-      return;
-    }
-    this->Invariant->Add(static_cast<std::int32_t>(id - this->First), v, e);
-  }
-};
-
-/**
- * Adds one face's contribution to the point normal sums of its corners in `range`. `vertexId(i)`
- * gives the face's i-th point id; the face is the area vector `r.Vector * 2^r.Exponent` for AREA
- * weighting, the unit normal otherwise. Faces without a normal contribute nothing.
- */
-template <class T, class VertexIdFn>
-void ScatterFace(int weighting, const T* pts, const VertexIdFn& vertexId, std::int64_t n,
-  const AreaVector& r, const PointRange& range)
-{
-  if (r.Status != phongvtk::StatusOk)
-  {
-    return; // degenerate or flagged: no direction to contribute
-  }
-  if (weighting == vtkPolygonNormals::AREA || weighting == vtkPolygonNormals::UNIFORM)
-  {
-    const bool area = weighting == vtkPolygonNormals::AREA;
-    const double* face = area ? r.Vector : r.Normal;
-    const int exponent = area ? r.Exponent : 0;
-    for (std::int64_t i = 0; i < n; ++i)
-    {
-      if (range.Contains(vertexId(i)))
-      {
-        range.Add(vertexId(i), face, exponent);
-      }
-    }
-    return;
-  }
-  // ANGLE and MAX look at each corner: the edges to the previous and the next vertex, each
-  // scaled by its own power of two (the angle does not change; Max's weight scales back).
-  const double* face = r.Normal;
-  for (std::int64_t i = 0; i < n; ++i)
-  {
-    if (!range.Contains(vertexId(i)))
-    {
-      continue;
-    }
-    const T* v = pts + 3 * vertexId(i);
-    double a[3], b[3];
-    const int ka = ScaledEdge(pts + 3 * vertexId((i + n - 1) % n), v, a);
-    const int kb = ScaledEdge(pts + 3 * vertexId((i + 1) % n), v, b);
-    if (ka == INT_MIN || kb == INT_MIN)
-    {
-      continue; // a repeated vertex has no corner
-    }
-    const double x[3] = { b[1] * a[2] - b[2] * a[1], b[2] * a[0] - b[0] * a[2],
-      b[0] * a[1] - b[1] * a[0] };
-    if (weighting == vtkPolygonNormals::ANGLE)
-    {
-      const double sine = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
-      const double cosine = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-      const double angle = std::atan2(sine, cosine);
-      const double weighted[3] = { angle * face[0], angle * face[1], angle * face[2] };
-      range.Add(vertexId(i), weighted, 0);
-    }
-    else
-    {
-      // (b x a) / (|a|^2 |b|^2) with a = a' 2^ka, b = b' 2^kb is the same of a', b' times
-      // 2^-(ka + kb).
-      const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
-      const double bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
-      const double inv = 1.0 / (aa * bb);
-      const double weighted[3] = { x[0] * inv, x[1] * inv, x[2] * inv };
-      range.Add(vertexId(i), weighted, -(ka + kb));
-    }
-  }
-}
-
-/// The unit normal of a sum (zero for a zero or non-finite sum).
-template <class O>
-void WriteNormal(const double s[3], O* normal)
-{
-  double unit[3] = { 0.0, 0.0, 0.0 };
-  double length;
-  int k;
-  if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]))
-  {
-    phongvtk::detail::NormalizeDouble(s, unit, length, k);
-  }
-  for (int c = 0; c < 3; ++c)
-  {
-    normal[c] = static_cast<O>(unit[c]);
-  }
-}
-
-/**
- * The unit normals of a range's points. Piece-invariant, each point's sum is a function of the
- * set of its contributions alone: the same whatever the order of the cells or their partition
- * among processes.
- */
-template <class O>
-void NormalizeSums(const PointRange& range, O* normals)
-{
-  if (range.Sums)
-  {
-    for (vtkIdType i = 0; i < range.Count; ++i)
-    {
-      WriteNormal(range.Sums[i].S, normals + 3 * (range.First + i));
-    }
-    return;
-  }
-  range.Invariant->Finish([&](std::int32_t i, const double sum[3], int)
-    { WriteNormal(sum, normals + 3 * (range.First + i)); });
-}
-
-/// Smallest and largest point id used by a block of polygons (empty: First > Last).
-struct IdSpan
-{
-  vtkIdType First;
-  vtkIdType Last;
-};
-
-/**
  * The whole computation for one combination of point type T and output type O. Returns false
  * when a cell refers to a point that does not exist (firstBadCell names it).
  */
@@ -462,6 +266,8 @@ public:
 
     // Vertices and lines are not surfaces; their point ids are checked all the same, since the
     // output passes them through.
+    phongvtk::PointNormalPass<T, O> pointPass{ this->Filter, input->GetPolys(), input->GetStrips(),
+      this->Points, this->NumberOfPoints, this->Weighting, this->PieceInvariant };
     vtkSMPThreadLocal<CellCounts> counts;
     this->CheckCells(input->GetVerts(), 0, counts, true);
     this->CheckCells(input->GetLines(), numVerts, counts, true);
@@ -475,8 +281,12 @@ public:
     else
     {
       // Point normals only, of finite points: the cell pass has nothing to write or count; the
-      // point pass computes the faces it needs.
-      this->CheckCells(input->GetPolys(), numVerts + numLines, counts, false);
+      // point pass computes the faces it needs, and the id spans of its blocks check the ids.
+      const vtkIdType bad = pointPass.FirstInvalidPolygon();
+      if (bad >= 0)
+      {
+        counts.Local().FirstBadCell = numVerts + numLines + bad;
+      }
       this->CheckCells(input->GetStrips(), numVerts + numLines + numPolys, counts, false);
     }
     for (const CellCounts& c : counts)
@@ -496,16 +306,16 @@ public:
       switch (this->AccuracyMode)
       {
         case vtkPolygonNormals::FAST:
-          this->ComputePointNormals<Accuracy::Fast>(pointNormals);
+          pointPass.template Run<Accuracy::Fast>(pointNormals);
           break;
         case vtkPolygonNormals::COMPENSATED:
-          this->ComputePointNormals<Accuracy::Compensated>(pointNormals);
+          pointPass.template Run<Accuracy::Compensated>(pointNormals);
           break;
         case vtkPolygonNormals::EXACT:
-          this->ComputePointNormals<Accuracy::Exact>(pointNormals);
+          pointPass.template Run<Accuracy::Exact>(pointNormals);
           break;
         default:
-          this->ComputePointNormals<Accuracy::Double>(pointNormals);
+          pointPass.template Run<Accuracy::Double>(pointNormals);
           break;
       }
     }
@@ -625,214 +435,6 @@ private:
       this->Filter->UpdateProgress(
         share * static_cast<double>(firstCell + end) / static_cast<double>(numCells));
     }
-  }
-
-  /// Polygons per block of the point pass.
-  static constexpr vtkIdType PolyBlock = 1024;
-
-  /**
-   * Point normals, in parallel and bitwise the same for any number of threads. The points are
-   * split into ranges, one task each; a task visits every block of polygons that uses one of its
-   * points, recomputes those faces and adds their contributions to its own points only: in cell
-   * order, or, piece-invariant, in an order set by their values (NormalizeSums). A point's normal
-   * is therefore the same however the points are split (and, piece-invariant, however the cells
-   * are ordered or the mesh is partitioned among processes), and no per-face buffer makes a
-   * round trip through memory. Blocks record
-   * the span of point ids they use, so on a coherent mesh a task visits only the blocks around
-   * its range; on an incoherent one the ranges grow until the repeated face work stays bounded.
-   */
-  template <Accuracy A>
-  void ComputePointNormals(O* pointNormals)
-  {
-    vtkCellArray* polys = this->Input->GetPolys();
-    const vtkIdType numPolys = polys ? polys->GetNumberOfCells() : 0;
-    const vtkIdType numBlocks = (numPolys + PolyBlock - 1) / PolyBlock;
-    std::vector<IdSpan> spans(static_cast<std::size_t>(numBlocks));
-    if (numPolys > 0)
-    {
-      polys->Visit(RawCells{},
-        [&](const auto* offsets, const auto* conn)
-        {
-          vtkSMPTools::For(0, numBlocks,
-            [&](vtkIdType begin, vtkIdType end)
-            {
-              for (vtkIdType b = begin; b < end; ++b)
-              {
-                IdSpan span{ this->NumberOfPoints, -1 };
-                const auto last = offsets[std::min(numPolys, (b + 1) * PolyBlock)];
-                for (auto k = offsets[b * PolyBlock]; k < last; ++k)
-                {
-                  span.First = std::min<vtkIdType>(span.First, conn[k]);
-                  span.Last = std::max<vtkIdType>(span.Last, conn[k]);
-                }
-                spans[b] = span;
-              }
-            });
-        });
-    }
-    const vtkIdType rangeSize = this->PointRangeSize(spans, numPolys);
-    const vtkIdType numRanges = (this->NumberOfPoints + rangeSize - 1) / rangeSize;
-    this->Filter->UpdateProgress(0.6);
-
-    struct Buffers
-    {
-      std::vector<ScaledSum> Sums;
-      InvariantSums Invariant;
-    };
-    vtkSMPThreadLocal<Buffers> localBuffers;
-    vtkCellArray* strips = this->Input->GetStrips();
-    vtkSMPTools::For(0, numRanges, 1,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        Buffers& buffers = localBuffers.Local();
-        for (vtkIdType r = begin; r < end && !this->Filter->GetAbortExecute(); ++r)
-        {
-          PointRange range;
-          range.First = r * rangeSize;
-          range.Count = std::min(rangeSize, this->NumberOfPoints - range.First);
-          if (this->PieceInvariant)
-          {
-            buffers.Invariant.Reset(static_cast<std::size_t>(range.Count));
-            range.Invariant = &buffers.Invariant;
-          }
-          else
-          {
-            buffers.Sums.assign(static_cast<std::size_t>(range.Count), ScaledSum());
-            range.Sums = buffers.Sums.data();
-          }
-          if (numPolys > 0)
-          {
-            polys->Visit(RawCells{},
-              [&](const auto* offsets, const auto* conn)
-              {
-                for (vtkIdType b = 0; b < numBlocks; ++b)
-                {
-                  if (spans[b].Last >= range.First && spans[b].First < range.First + range.Count)
-                  {
-                    this->ScatterPolygons<A>(
-                      offsets, conn, b * PolyBlock, std::min(numPolys, (b + 1) * PolyBlock), range);
-                  }
-                }
-              });
-          }
-          if (strips && strips->GetNumberOfCells() > 0)
-          {
-            this->ScatterStrips<A>(strips, range);
-          }
-          NormalizeSums(range, pointNormals);
-        }
-      });
-  }
-
-  /**
-   * Points per range: small enough that a range's sums stay in cache and the ranges keep every
-   * thread busy, large enough that the polygons visited by more than one range (those whose
-   * span crosses a range boundary) add at most a quarter to the face work. At worst one range
-   * per thread: each then computes every face once, in parallel.
-   */
-  vtkIdType PointRangeSize(const std::vector<IdSpan>& spans, vtkIdType numPolys) const
-  {
-    const vtkIdType threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
-    const vtkIdType widest = std::max<vtkIdType>(1, (this->NumberOfPoints + threads - 1) / threads);
-    // At least four ranges a thread, so that small meshes keep both threads busy too.
-    vtkIdType size = std::max<vtkIdType>(
-      1024, std::min<vtkIdType>(16384, (this->NumberOfPoints + 4 * threads - 1) / (4 * threads)));
-    size = std::min(size, widest);
-    for (; size < widest; size *= 4)
-    {
-      vtkIdType visits = 0;
-      for (const IdSpan& span : spans)
-      {
-        if (span.First <= span.Last)
-        {
-          visits += span.Last / size - span.First / size + 1;
-        }
-      }
-      if (visits * PolyBlock <= numPolys + numPolys / 4 + PolyBlock)
-      {
-        return size;
-      }
-    }
-    return widest;
-  }
-
-  /// Adds the faces of polygons [begin, end) to a range's sums, triangles four at a time.
-  template <Accuracy A, class Off, class Conn>
-  void ScatterPolygons(
-    const Off* offsets, const Conn* conn, vtkIdType begin, vtkIdType end, const PointRange& range)
-  {
-    const T* pts = this->Points;
-    const int weighting = this->Weighting;
-    for (vtkIdType cell = begin; cell < end;)
-    {
-      if (cell + 4 <= end && AreFourTriangles(offsets, cell))
-      {
-        const T* corner[3][4];
-        TriangleCorners(pts, offsets, conn, cell, corner);
-        phongvtk::TriangleLanes lanes;
-        phongvtk::ComputeTriangles4<A, T>(corner, lanes);
-        for (int j = 0; j < 4; ++j, ++cell)
-        {
-          const Conn* ids = conn + offsets[cell];
-          auto vertexId = [ids](std::int64_t i)
-          {
-            return static_cast<vtkIdType>(ids[i]);
-          };
-          if (lanes.Done & (1 << j))
-          {
-            ScatterFace(weighting, pts, vertexId, 3, lanes.Result(j), range);
-          }
-          else
-          {
-            AreaVector r;
-            phongvtk::ComputeAreaVector<A, T>([pts, ids](std::int64_t i)
-              { return pts + 3 * static_cast<std::int64_t>(ids[i]); },
-              3, r);
-            ScatterFace(weighting, pts, vertexId, 3, r, range);
-          }
-        }
-        continue;
-      }
-      const Conn* ids = conn + offsets[cell];
-      const std::int64_t n = offsets[cell + 1] - offsets[cell];
-      AreaVector r;
-      phongvtk::ComputeAreaVector<A, T>(
-        [pts, ids](std::int64_t i) { return pts + 3 * static_cast<std::int64_t>(ids[i]); }, n, r);
-      ScatterFace(
-        weighting, pts, [ids](std::int64_t i) { return static_cast<vtkIdType>(ids[i]); }, n, r,
-        range);
-      ++cell;
-    }
-  }
-
-  /// A strip contributes triangle by triangle, each with the strip's alternating orientation.
-  template <Accuracy A>
-  void ScatterStrips(vtkCellArray* strips, const PointRange& range)
-  {
-    const T* pts = this->Points;
-    strips->Visit(RawCells{},
-      [&](const auto* offsets, const auto* conn)
-      {
-        for (vtkIdType cell = 0; cell < strips->GetNumberOfCells(); ++cell)
-        {
-          const auto* ids = conn + offsets[cell];
-          const std::int64_t n = offsets[cell + 1] - offsets[cell];
-          for (std::int64_t j = 0; j + 2 < n; ++j)
-          {
-            const vtkIdType tri[3] = { static_cast<vtkIdType>(ids[j + (j & 1)]),
-              static_cast<vtkIdType>(ids[j + 1 - (j & 1)]), static_cast<vtkIdType>(ids[j + 2]) };
-            if (!range.Contains(tri[0]) && !range.Contains(tri[1]) && !range.Contains(tri[2]))
-            {
-              continue;
-            }
-            AreaVector r;
-            phongvtk::ComputeAreaVector<A, T>(
-              [pts, &tri](std::int64_t i) { return pts + 3 * tri[i]; }, 3, r);
-            ScatterFace(
-              this->Weighting, pts, [&tri](std::int64_t i) { return tri[i]; }, 3, r, range);
-          }
-        }
-      });
   }
 };
 

@@ -1,0 +1,536 @@
+/**
+ * @file PhongVTKPointNormals.h
+ * @brief Private: vtkPolygonNormals' point pass. Every point's normal is the normalised sum of its
+ * faces' contributions (area vector, unit normal, or a corner-weighted normal), computed in
+ * parallel and bitwise the same for any number of threads; piece-invariant, also the same for
+ * any order of the cells and any partition of the mesh (PhongVTKPointSums.h).
+ */
+#ifndef PhongVTKPointNormals_h
+#define PhongVTKPointNormals_h
+
+#include "PhongVTKAreaVector.h"
+#include "PhongVTKCells.h"
+#include "PhongVTKPointSums.h"
+#include "vtkPolygonNormals.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkCellArray.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace phongvtk
+{
+
+/**
+ * The edge from v to q scaled by 2^-k so that its largest component lies in [1, 2); returns k,
+ * or INT_MIN for a zero edge. Coordinates whose difference overflows are halved first.
+ */
+template <class T>
+inline int ScaledEdge(const T* q, const T* v, double e[3])
+{
+  int extra = 0;
+  for (int c = 0; c < 3; ++c)
+  {
+    e[c] = static_cast<double>(q[c]) - static_cast<double>(v[c]);
+  }
+  if (!std::isfinite(phongvtk::detail::MaxAbs3(e)))
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      e[c] = 0.5 * static_cast<double>(q[c]) - 0.5 * static_cast<double>(v[c]);
+    }
+    extra = 1;
+  }
+  const double m = phongvtk::detail::MaxAbs3(e);
+  if (!(m > 0.0) || !std::isfinite(m))
+  {
+    return INT_MIN;
+  }
+  const int k = phongvtk::detail::Exponent2(m);
+  for (int c = 0; c < 3; ++c)
+  {
+    e[c] = phongvtk::detail::Scale2(e[c], -k);
+  }
+  return k + extra;
+}
+
+/**
+ * The points [First, First + Count) whose normals one task of the point pass computes. A face
+ * adds its contribution to the corners inside the range only: to their sums, in cell order, or,
+ * piece-invariant, to sums that do not depend on the order (InvariantSums).
+ */
+struct PointRange
+{
+  vtkIdType First = 0;
+  vtkIdType Count = 0;
+  ScaledSum* Sums = nullptr;          // in cell order, or
+  InvariantSums* Invariant = nullptr; // independent of the order
+
+  PHONGVTK_INLINE bool Contains(vtkIdType id) const
+  {
+    const auto i = static_cast<std::make_unsigned_t<vtkIdType>>(id - this->First);
+    return i < static_cast<std::make_unsigned_t<vtkIdType>>(this->Count);
+  }
+
+  PHONGVTK_INLINE void Add(vtkIdType id, const double v[3], int e) const
+  {
+    if (this->Sums)
+    {
+      this->Sums[id - this->First].Add(v, e);
+      return;
+    }
+    this->Invariant->Add(static_cast<std::int32_t>(id - this->First), v, e);
+  }
+
+  /// Add() of a face's contribution to one of its corners, with `top` =
+  /// InvariantSums::TopOf(v, e) when piece-invariant (computed once for all corners).
+  PHONGVTK_INLINE void Add(vtkIdType id, const double v[3], int e, int top) const
+  {
+    if (this->Sums)
+    {
+      this->Sums[id - this->First].Add(v, e);
+      return;
+    }
+    this->Invariant->Add(static_cast<std::int32_t>(id - this->First), v, e, top);
+  }
+};
+
+/**
+ * Adds one face's contribution to the point normal sums of its corners in `range`. `vertexId(i)`
+ * gives the face's i-th point id; the face is the area vector `r.Vector * 2^r.Exponent` for AREA
+ * weighting, the unit normal otherwise. Faces without a normal contribute nothing.
+ */
+template <class T, class VertexIdFn>
+void ScatterFace(int weighting, const T* pts, const VertexIdFn& vertexId, std::int64_t n,
+  const AreaVector& r, const PointRange& range)
+{
+  if (r.Status != phongvtk::StatusOk)
+  {
+    return; // degenerate or flagged: no direction to contribute
+  }
+  if (weighting == vtkPolygonNormals::AREA || weighting == vtkPolygonNormals::UNIFORM)
+  {
+    const bool area = weighting == vtkPolygonNormals::AREA;
+    const double* face = area ? r.Vector : r.Normal;
+    const int exponent = area ? r.Exponent : 0;
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      if (range.Contains(vertexId(i)))
+      {
+        range.Add(vertexId(i), face, exponent);
+      }
+    }
+    return;
+  }
+  // ANGLE and MAX look at each corner: the edges to the previous and the next vertex, each
+  // scaled by its own power of two (the angle does not change; Max's weight scales back).
+  const double* face = r.Normal;
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    if (!range.Contains(vertexId(i)))
+    {
+      continue;
+    }
+    const T* v = pts + 3 * vertexId(i);
+    double a[3], b[3];
+    const int ka = ScaledEdge(pts + 3 * vertexId((i + n - 1) % n), v, a);
+    const int kb = ScaledEdge(pts + 3 * vertexId((i + 1) % n), v, b);
+    if (ka == INT_MIN || kb == INT_MIN)
+    {
+      continue; // a repeated vertex has no corner
+    }
+    const double x[3] = { b[1] * a[2] - b[2] * a[1], b[2] * a[0] - b[0] * a[2],
+      b[0] * a[1] - b[1] * a[0] };
+    if (weighting == vtkPolygonNormals::ANGLE)
+    {
+      const double sine = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+      const double cosine = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+      const double angle = std::atan2(sine, cosine);
+      const double weighted[3] = { angle * face[0], angle * face[1], angle * face[2] };
+      range.Add(vertexId(i), weighted, 0);
+    }
+    else
+    {
+      // (b x a) / (|a|^2 |b|^2) with a = a' 2^ka, b = b' 2^kb is the same of a', b' times
+      // 2^-(ka + kb).
+      const double aa = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+      const double bb = b[0] * b[0] + b[1] * b[1] + b[2] * b[2];
+      const double inv = 1.0 / (aa * bb);
+      const double weighted[3] = { x[0] * inv, x[1] * inv, x[2] * inv };
+      range.Add(vertexId(i), weighted, -(ka + kb));
+    }
+  }
+}
+
+/// The unit normal of a sum (zero for a zero or non-finite sum).
+template <class O>
+void WriteNormal(const double s[3], O* normal)
+{
+  double unit[3] = { 0.0, 0.0, 0.0 };
+  double length;
+  int k;
+  if (std::isfinite(s[0]) && std::isfinite(s[1]) && std::isfinite(s[2]))
+  {
+    phongvtk::detail::NormalizeDouble(s, unit, length, k);
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    normal[c] = static_cast<O>(unit[c]);
+  }
+}
+
+/**
+ * The unit normals of a range's points. Piece-invariant, each point's sum is a function of the
+ * set of its contributions alone: the same whatever the order of the cells or their partition
+ * among processes.
+ */
+template <class O>
+void NormalizeSums(const PointRange& range, O* normals)
+{
+  if (range.Sums)
+  {
+    for (vtkIdType i = 0; i < range.Count; ++i)
+    {
+      WriteNormal(range.Sums[i].S, normals + 3 * (range.First + i));
+    }
+    return;
+  }
+  range.Invariant->Finish([&](std::int32_t i, const double sum[3], int)
+    { WriteNormal(sum, normals + 3 * (range.First + i)); });
+}
+
+/// Smallest and largest point id used by a block of polygons (empty: First > Last).
+struct IdSpan
+{
+  vtkIdType First;
+  vtkIdType Last;
+};
+
+/**
+ * The point pass for point type T and output type O: `Run<A>(normals)` writes a unit normal (or
+ * zero) for every point. The cells' point ids have been checked.
+ */
+template <class T, class O>
+struct PointNormalPass
+{
+  vtkAlgorithm* Filter; // progress and abort
+  vtkCellArray* Polys;
+  vtkCellArray* Strips;
+  const T* Points;
+  vtkIdType NumberOfPoints;
+  int Weighting;
+  bool PieceInvariant;
+  std::vector<IdSpan> Spans = {}; // see ComputeSpans
+  bool SpansReady = false;
+
+  /// Polygons per block of the point pass.
+  static constexpr vtkIdType PolyBlock = 1024;
+
+  /**
+   * Point normals, in parallel and bitwise the same for any number of threads. The points are
+   * split into ranges, one task each; a task visits every block of polygons that uses one of its
+   * points, recomputes those faces and adds their contributions to its own points only: in cell
+   * order, or, piece-invariant, in an order set by their values (NormalizeSums). A point's normal
+   * is therefore the same however the points are split (and, piece-invariant, however the cells
+   * are ordered or the mesh is partitioned among processes), and no per-face buffer makes a
+   * round trip through memory. Blocks record
+   * the span of point ids they use, so on a coherent mesh a task visits only the blocks around
+   * its range; on an incoherent one the ranges grow until the repeated face work stays bounded.
+   */
+  /**
+   * The first polygon (index in the polygon array) with a point id outside [0, number of points),
+   * or -1: found from the blocks' id spans, which Run() then uses.
+   */
+  vtkIdType FirstInvalidPolygon()
+  {
+    this->ComputeSpans();
+    vtkIdType first = -1;
+    const vtkIdType numPolys = this->Polys ? this->Polys->GetNumberOfCells() : 0;
+    for (std::size_t b = 0; b < this->Spans.size() && first < 0; ++b)
+    {
+      const IdSpan& span = this->Spans[b];
+      if (span.First <= span.Last && (span.First < 0 || span.Last >= this->NumberOfPoints))
+      {
+        const vtkIdType begin = static_cast<vtkIdType>(b) * PolyBlock;
+        const vtkIdType end = std::min(numPolys, begin + PolyBlock);
+        this->Polys->Visit(RawCells{},
+          [&](const auto* offsets, const auto* conn)
+          {
+            for (vtkIdType cell = begin; cell < end && first < 0; ++cell)
+            {
+              if (!ValidIds(
+                    conn + offsets[cell], offsets[cell + 1] - offsets[cell], this->NumberOfPoints))
+              {
+                first = cell;
+              }
+            }
+          });
+      }
+    }
+    return first;
+  }
+
+  template <Accuracy A>
+  void Run(O* pointNormals)
+  {
+    this->ComputeSpans();
+    vtkCellArray* polys = this->Polys;
+    const vtkIdType numPolys = polys ? polys->GetNumberOfCells() : 0;
+    const vtkIdType numBlocks = (numPolys + PolyBlock - 1) / PolyBlock;
+    const std::vector<IdSpan>& spans = this->Spans;
+    const vtkIdType rangeSize = this->PointRangeSize(spans, numPolys);
+    const vtkIdType numRanges = (this->NumberOfPoints + rangeSize - 1) / rangeSize;
+    this->Filter->UpdateProgress(0.6);
+
+    struct Buffers
+    {
+      std::vector<ScaledSum> Sums;
+      InvariantSums Invariant;
+    };
+    vtkSMPThreadLocal<Buffers> localBuffers;
+    vtkCellArray* strips = this->Strips;
+    vtkSMPTools::For(0, numRanges, 1,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        Buffers& buffers = localBuffers.Local();
+        for (vtkIdType r = begin; r < end && !this->Filter->GetAbortExecute(); ++r)
+        {
+          PointRange range;
+          range.First = r * rangeSize;
+          range.Count = std::min(rangeSize, this->NumberOfPoints - range.First);
+          if (this->PieceInvariant)
+          {
+            buffers.Invariant.Reset(static_cast<std::size_t>(range.Count));
+            range.Invariant = &buffers.Invariant;
+          }
+          else
+          {
+            buffers.Sums.assign(static_cast<std::size_t>(range.Count), ScaledSum());
+            range.Sums = buffers.Sums.data();
+          }
+          if (numPolys > 0)
+          {
+            polys->Visit(RawCells{},
+              [&](const auto* offsets, const auto* conn)
+              {
+                for (vtkIdType b = 0; b < numBlocks; ++b)
+                {
+                  if (spans[b].Last >= range.First && spans[b].First < range.First + range.Count)
+                  {
+                    this->ScatterPolygons<A>(
+                      offsets, conn, b * PolyBlock, std::min(numPolys, (b + 1) * PolyBlock), range);
+                  }
+                }
+              });
+          }
+          if (strips && strips->GetNumberOfCells() > 0)
+          {
+            this->ScatterStrips<A>(strips, range);
+          }
+          NormalizeSums(range, pointNormals);
+        }
+      });
+  }
+
+  /// The smallest and largest point id of every block of PolyBlock polygons (once).
+  void ComputeSpans()
+  {
+    const vtkIdType numPolys = this->Polys ? this->Polys->GetNumberOfCells() : 0;
+    const vtkIdType numBlocks = (numPolys + PolyBlock - 1) / PolyBlock;
+    if (this->SpansReady)
+    {
+      return;
+    }
+    this->SpansReady = true;
+    this->Spans.resize(static_cast<std::size_t>(numBlocks));
+    if (numPolys == 0)
+    {
+      return;
+    }
+    this->Polys->Visit(RawCells{},
+      [&](const auto* offsets, const auto* conn)
+      {
+        vtkSMPTools::For(0, numBlocks,
+          [&](vtkIdType begin, vtkIdType end)
+          {
+            for (vtkIdType b = begin; b < end; ++b)
+            {
+              using Id = std::remove_cv_t<std::remove_pointer_t<decltype(conn)>>;
+              Id first = std::numeric_limits<Id>::max();
+              Id last = std::numeric_limits<Id>::lowest();
+              const auto stop = offsets[std::min(numPolys, (b + 1) * PolyBlock)];
+              for (auto k = offsets[b * PolyBlock]; k < stop; ++k)
+              {
+                first = std::min(first, conn[k]);
+                last = std::max(last, conn[k]);
+              }
+              this->Spans[static_cast<std::size_t>(b)] =
+                stop > offsets[b * PolyBlock] ? IdSpan{ first, last } : IdSpan{ 0, -1 };
+            }
+          });
+      });
+  }
+
+  /**
+   * Points per range: small enough that a range's sums stay in cache and the ranges keep every
+   * thread busy, large enough that the polygons visited by more than one range (those whose
+   * span crosses a range boundary) add at most a quarter to the face work. At worst one range
+   * per thread: each then computes every face once, in parallel.
+   */
+  vtkIdType PointRangeSize(const std::vector<IdSpan>& spans, vtkIdType numPolys) const
+  {
+    const vtkIdType threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+    const vtkIdType widest = std::max<vtkIdType>(1, (this->NumberOfPoints + threads - 1) / threads);
+    // At least four ranges a thread, so that small meshes keep both threads busy too.
+    vtkIdType size = std::max<vtkIdType>(1024,
+      std::min<vtkIdType>(this->PieceInvariant ? 4096 : 16384,
+        (this->NumberOfPoints + 4 * threads - 1) / (4 * threads)));
+    size = std::min(size, widest);
+    for (; size < widest; size *= 4)
+    {
+      vtkIdType visits = 0;
+      for (const IdSpan& span : spans)
+      {
+        if (span.First <= span.Last)
+        {
+          visits += span.Last / size - span.First / size + 1;
+        }
+      }
+      if (visits * PolyBlock <= numPolys + numPolys / 4 + PolyBlock)
+      {
+        return size;
+      }
+    }
+    return widest;
+  }
+
+  /// Adds the faces of polygons [begin, end) to a range's sums, triangles four at a time.
+  template <Accuracy A, class Off, class Conn>
+  void ScatterPolygons(const Off* offsets, const Conn* conn, vtkIdType begin, vtkIdType end,
+    const PointRange& range) const
+  {
+    const T* pts = this->Points;
+    const int weighting = this->Weighting;
+    for (vtkIdType cell = begin; cell < end;)
+    {
+      if constexpr (A == Accuracy::Double)
+      {
+        if (weighting == vtkPolygonNormals::AREA && cell + 4 <= end &&
+          AreFourTriangles(offsets, cell))
+        {
+          // The area vectors are all AREA weighting needs: no normals.
+          const T* corner[3][4];
+          TriangleCorners(pts, offsets, conn, cell, corner);
+          detail::V4 w[3];
+          detail::DoubleAreaVectors4<T>(corner, w);
+          const int done = detail::InWindow(w, 0x1p-500, 0x1p500);
+          for (int j = 0; j < 4; ++j, ++cell)
+          {
+            const Conn* ids = conn + offsets[cell];
+            if (done & (1 << j))
+            {
+              const double v[3] = { w[0][j], w[1][j], w[2][j] };
+              const int top = range.Invariant ? InvariantSums::TopOf(v, 0) : 0;
+              for (int i = 0; i < 3; ++i)
+              {
+                if (range.Contains(static_cast<vtkIdType>(ids[i])))
+                {
+                  range.Add(static_cast<vtkIdType>(ids[i]), v, 0, top);
+                }
+              }
+              continue;
+            }
+            AreaVector r;
+            phongvtk::ComputeAreaVector<A, T>([pts, ids](std::int64_t i)
+              { return pts + 3 * static_cast<std::int64_t>(ids[i]); },
+              3, r);
+            ScatterFace(
+              weighting, pts, [ids](std::int64_t i) { return static_cast<vtkIdType>(ids[i]); }, 3,
+              r, range);
+          }
+          continue;
+        }
+      }
+      if (cell + 4 <= end && AreFourTriangles(offsets, cell))
+      {
+        const T* corner[3][4];
+        TriangleCorners(pts, offsets, conn, cell, corner);
+        phongvtk::TriangleLanes lanes;
+        phongvtk::ComputeTriangles4<A, T>(corner, lanes);
+        for (int j = 0; j < 4; ++j, ++cell)
+        {
+          const Conn* ids = conn + offsets[cell];
+          auto vertexId = [ids](std::int64_t i)
+          {
+            return static_cast<vtkIdType>(ids[i]);
+          };
+          if (lanes.Done & (1 << j))
+          {
+            ScatterFace(weighting, pts, vertexId, 3, lanes.Result(j), range);
+          }
+          else
+          {
+            AreaVector r;
+            phongvtk::ComputeAreaVector<A, T>([pts, ids](std::int64_t i)
+              { return pts + 3 * static_cast<std::int64_t>(ids[i]); },
+              3, r);
+            ScatterFace(weighting, pts, vertexId, 3, r, range);
+          }
+        }
+        continue;
+      }
+      const Conn* ids = conn + offsets[cell];
+      const std::int64_t n = offsets[cell + 1] - offsets[cell];
+      AreaVector r;
+      phongvtk::ComputeAreaVector<A, T>(
+        [pts, ids](std::int64_t i) { return pts + 3 * static_cast<std::int64_t>(ids[i]); }, n, r);
+      ScatterFace(
+        weighting, pts, [ids](std::int64_t i) { return static_cast<vtkIdType>(ids[i]); }, n, r,
+        range);
+      ++cell;
+    }
+  }
+
+  /// A strip contributes triangle by triangle, each with the strip's alternating orientation.
+  template <Accuracy A>
+  void ScatterStrips(vtkCellArray* strips, const PointRange& range) const
+  {
+    const T* pts = this->Points;
+    strips->Visit(RawCells{},
+      [&](const auto* offsets, const auto* conn)
+      {
+        for (vtkIdType cell = 0; cell < strips->GetNumberOfCells(); ++cell)
+        {
+          const auto* ids = conn + offsets[cell];
+          const std::int64_t n = offsets[cell + 1] - offsets[cell];
+          for (std::int64_t j = 0; j + 2 < n; ++j)
+          {
+            const vtkIdType tri[3] = { static_cast<vtkIdType>(ids[j + (j & 1)]),
+              static_cast<vtkIdType>(ids[j + 1 - (j & 1)]), static_cast<vtkIdType>(ids[j + 2]) };
+            if (!range.Contains(tri[0]) && !range.Contains(tri[1]) && !range.Contains(tri[2]))
+            {
+              continue;
+            }
+            AreaVector r;
+            phongvtk::ComputeAreaVector<A, T>(
+              [pts, &tri](std::int64_t i) { return pts + 3 * tri[i]; }, 3, r);
+            ScatterFace(
+              this->Weighting, pts, [&tri](std::int64_t i) { return tri[i]; }, 3, r, range);
+          }
+        }
+      });
+  }
+};
+
+} // namespace phongvtk
+
+#endif
+// VTK-HeaderTest-Exclude: PhongVTKPointNormals.h
