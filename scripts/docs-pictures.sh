@@ -3,8 +3,8 @@
 # (scripts/build.sh). Quote numbers from one run of this script; the machine should be idle.
 #   demo.png, demo-tables.txt      the main job: build/bin/phongvtk demo (Sequential, as users call it)
 #   trade-table.txt                build/bin/PhongVTKTradeTable: the extended normals ladder
-#   python-speed.txt               scripts/bench-python.sh: normals against VTK's, both backends
-#   benchmark-normals.txt          PhongVTKBenchPolygonNormals, STDThread, medians of 5
+#   python-speed.txt               phongvtk bench --speed: against VTK's filters, both backends
+#   benchmark-normals.txt          scripts/bench-normals.sh cxx: the same in C++, both backends
 #   normals-ladder.png, shading-error-vs-tessellation.png   phongvtk bench --plot-dir
 #   paraview-presets.png           Testing/Plugin/pv_presets.py under pvbatch (ParaView flavour)
 #   paraview-plugin.png            the ParaView client under Xvfb (ParaView flavour; installs
@@ -22,12 +22,10 @@ say "the main job"
 "$build/bin/phongvtk" demo -q -o demo.png | grep -v '^picture: ' >demo-tables.txt
 say "the extended trade table"
 "$build/bin/PhongVTKTradeTable" >trade-table.txt
-say "normals from Python, both backends"
-"$here/scripts/bench-python.sh" >python-speed.txt 2>/dev/null
-say "Google Benchmark of the normals (a few minutes)"
-VTK_SMP_BACKEND_IN_USE=STDThread "$build/bin/PhongVTKBenchPolygonNormals" \
-  --benchmark_repetitions=5 --benchmark_report_aggregates_only=true --benchmark_color=false \
-  >benchmark-normals.txt 2>/dev/null
+say "speed from Python, both backends"
+"$build/bin/phongvtk" bench --speed >python-speed.txt 2>/dev/null
+say "the same in C++, both backends (a few minutes)"
+PHONGVTK_BUILD_DIR="$build" "$here/scripts/bench-normals.sh" cxx >benchmark-normals.txt
 say "plots"
 "$build/bin/phongvtk" bench -q --plot-dir . >/dev/null
 

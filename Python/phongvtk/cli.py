@@ -117,9 +117,32 @@ class LightAction(argparse.Action):
 
 
 def add_common(parser):
-    """--quiet on a subcommand (also accepted before the subcommand)."""
+    """--quiet and --threads on a subcommand (also accepted before the subcommand)."""
     parser.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
                         help="no progress bars, warnings or other chatter on stderr")
+    parser.add_argument("--threads", type=positive_int, metavar="N", default=argparse.SUPPRESS,
+                        help="threads of the filters (VTK's STDThread SMP backend; 1: "
+                             "Sequential); default: every core, unless VTK_SMP_BACKEND_IN_USE "
+                             "names a backend")
+
+
+def use_threads(threads):
+    """The SMP backend of this process: the command line owns it, so by default it uses every
+    core (STDThread); `threads` = 1 is VTK's Sequential backend. With neither --threads nor
+    VTK_SMP_BACKEND_IN_USE, STDThread on os.cpu_count() threads. (The library itself keeps to
+    whatever backend the application chose.)"""
+    from vtkmodules.vtkCommonCore import vtkSMPTools
+
+    if threads is None:
+        if os.environ.get("VTK_SMP_BACKEND_IN_USE"):
+            return
+        threads = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (
+            os.cpu_count() or 1)
+    if threads == 1:
+        vtkSMPTools.SetBackend("Sequential")
+        return
+    if vtkSMPTools.SetBackend("STDThread"):
+        vtkSMPTools.Initialize(threads)
 
 
 def add_accuracy(parser, what):
@@ -400,7 +423,13 @@ def save_plot(plot, rows, path, args):
 
 
 def run_bench(args, progress):
-    """bench: the normals ladder and the shading error against tessellation, with plots."""
+    """bench: the normals ladder and the shading error against tessellation, with plots; or
+    --speed, the speed against VTK's filters with both SMP backends."""
+    if args.speed:
+        from . import speed  # imports no rendering: runs on every VTK
+
+        speed.main(["--rounds", str(args.repeats or 7)])
+        return
     settings = bench_settings(args)
     if args.only in (None, "normals"):
         rows = normals_ladder(*the_mesh(args, progress), args, progress)
@@ -519,6 +548,10 @@ def build_parser():
                         version=f"phongvtk {phongvtk.__version__} (VTK {vtk_version()})")
     parser.add_argument("-q", "--quiet", action="store_true",
                         help="no progress bars, warnings or other chatter on stderr")
+    parser.add_argument("--threads", type=positive_int, metavar="N",
+                        help="threads of the filters (VTK's STDThread SMP backend; 1: "
+                             "Sequential); default: every core, unless VTK_SMP_BACKEND_IN_USE "
+                             "names a backend")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
 
     render = commands.add_parser(
@@ -598,6 +631,12 @@ def build_parser():
     add_bench_options(benchmark)
     benchmark.add_argument("--only", choices=("normals", "shading"),
                            help="run one of the two benchmarks")
+    benchmark.add_argument("--speed", action="store_true",
+                           help="instead: time vtkPolygonNormals and vtkVisibleArea against "
+                                "vtkPolyDataNormals, vtkTriangleMeshPointNormals and the memory "
+                                "floor on a 2M-triangle sphere and the bunny, with VTK's default "
+                                "(Sequential) and the STDThread SMP backend, one child process "
+                                "each (--repeats: rounds, default 7); runs 1-2 minutes")
     benchmark.add_argument("--size", type=positive_int, metavar="N", dest="shading_size",
                            help="shading images are N x N pixels (default 400; --quick 128)")
     benchmark.add_argument("--parallel", action="store_true",
@@ -660,6 +699,7 @@ def main(argv=None):
     args = build_parser().parse_args(argv)
     progress = Progress(quiet=args.quiet)
     try:
+        use_threads(getattr(args, "threads", None))
         args.run(args, progress)
     except CommandError as error:
         progress.abandon()

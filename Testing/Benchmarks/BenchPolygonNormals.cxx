@@ -3,6 +3,11 @@
 //
 //   VTK_SMP_BACKEND_IN_USE=STDThread build/bin/PhongVTKBenchPolygonNormals
 //       [--benchmark_repetitions=5] [--benchmark_filter=Sphere]
+//   scripts/bench-normals.sh      # both SMP backends, then the same from Python
+//
+// Unless told otherwise, the benchmarks run in random interleaved order, five repetitions each
+// (medians), so that PhongVTK and the anchors share the machine's state; the inputs are bare
+// geometry, the same as phongvtk.speed's (Python/phongvtk/speed.py).
 //
 // Meshes: vtkSphereSource 1000 x 1000 (~2,000,000 triangles, float points) and CGAL's bunny
 // (75,408 triangles, double points). Anchors: vtkPolyDataNormals with cell normals only, with
@@ -142,8 +147,9 @@ void MemoryCopy(benchmark::State& state)
   state.SetBytesProcessed(static_cast<int64_t>(2 * bytes) * state.iterations());
 }
 
-/// Bytes vtkPolygonNormals must read and write for cell normals (float output).
-double CellNormalBytes(vtkPolyData* mesh)
+/// Bytes vtkPolygonNormals must read and write for cell normals (float output); point normals
+/// write 12 bytes a point instead of 12 a cell.
+double CellNormalBytes(vtkPolyData* mesh, bool points = false)
 {
   vtkCellArray* polys = mesh->GetPolys();
   return static_cast<double>(mesh->GetPoints()->GetData()->GetDataSize()) *
@@ -152,7 +158,7 @@ double CellNormalBytes(vtkPolyData* mesh)
     polys->GetOffsetsArray()->GetDataTypeSize() +
     static_cast<double>(polys->GetConnectivityArray()->GetDataSize()) *
     polys->GetConnectivityArray()->GetDataTypeSize() +
-    12.0 * static_cast<double>(mesh->GetNumberOfCells());
+    12.0 * static_cast<double>(points ? mesh->GetNumberOfPoints() : mesh->GetNumberOfCells());
 }
 
 const char* ModeName(int mode)
@@ -196,7 +202,31 @@ public:
 
 int main(int argc, char** argv)
 {
-  benchmark::Initialize(&argc, argv);
+  // Interleaved repetitions unless the command line says otherwise.
+  std::vector<char*> args(argv, argv + argc);
+  auto given = [&](const char* flag)
+  {
+    return std::any_of(args.begin(), args.end(),
+      [flag](const char* a) { return std::strncmp(a, flag, std::strlen(flag)) == 0; });
+  };
+  static char interleave[] = "--benchmark_enable_random_interleaving=true";
+  static char repetitions[] = "--benchmark_repetitions=5";
+  static char aggregates[] = "--benchmark_report_aggregates_only=true";
+  if (!given("--benchmark_enable_random_interleaving"))
+  {
+    args.push_back(interleave);
+  }
+  if (!given("--benchmark_repetitions"))
+  {
+    args.push_back(repetitions);
+  }
+  if (!given("--benchmark_report_aggregates_only"))
+  {
+    args.push_back(aggregates);
+  }
+  int count = static_cast<int>(args.size());
+  args.push_back(nullptr);
+  benchmark::Initialize(&count, args.data());
   Meshes().push_back({ "Sphere2M", phongvtk_bench::Sphere(1000) });
   if (auto bunny = phongvtk_bench::CGALMesh("bunny00.off"))
   {
@@ -255,13 +285,15 @@ int main(int argc, char** argv)
     const double triangleAnchor = seconds(m + "vtkTriangleMeshPointNormals");
     const double floor =
       reporter.Bandwidth > 0 ? CellNormalBytes(mesh.Data) / reporter.Bandwidth : 0.0;
+    const double pointFloor =
+      reporter.Bandwidth > 0 ? CellNormalBytes(mesh.Data, true) / reporter.Bandwidth : 0.0;
     std::printf("\n%s: %lld cells; vtkPolyDataNormals cells %.1f ms, points %.1f ms; "
-                "vtkTriangleMeshPointNormals %.1f ms; memory floor %.2f ms\n",
+                "vtkTriangleMeshPointNormals %.1f ms; memory floor cells %.2f ms, points %.2f ms\n",
       mesh.Name.c_str(), static_cast<long long>(mesh.Data->GetNumberOfCells()), 1e3 * cellsAnchor,
-      1e3 * pointsAnchor, 1e3 * triangleAnchor, 1e3 * floor);
-    std::printf("%-12s %10s %12s %10s | %10s %12s %14s | %14s %12s\n", "mode", "cells ms",
-      "vs PDN cells", "x floor", "points ms", "vs PDN points", "vs TriMeshPN", "cell order ms",
-      "invariant x");
+      1e3 * pointsAnchor, 1e3 * triangleAnchor, 1e3 * floor, 1e3 * pointFloor);
+    std::printf("%-12s %10s %12s %10s | %10s %12s %14s %10s | %14s %12s\n", "mode", "cells ms",
+      "vs PDN cells", "x floor", "points ms", "vs PDN points", "vs TriMeshPN", "x floor",
+      "cell order ms", "invariant x");
     for (int mode = vtkPolygonNormals::FAST; mode <= vtkPolygonNormals::EXACT; ++mode)
     {
       const double cells = seconds(m + "PolygonNormals.Cells." + ModeName(mode));
@@ -271,10 +303,10 @@ int main(int argc, char** argv)
       {
         continue;
       }
-      std::printf("%-12s %10.2f %11.1fx %9.2fx | %10.2f %12.1fx %13.1fx | %14.2f %11.2fx\n",
+      std::printf("%-12s %10.2f %11.1fx %9.2fx | %10.2f %12.1fx %13.1fx %9.2fx | %14.2f %11.2fx\n",
         ModeName(mode), 1e3 * cells, cellsAnchor / cells, floor > 0 ? cells / floor : 0.0,
-        1e3 * points, pointsAnchor / points, triangleAnchor / points, 1e3 * cellOrder,
-        points / cellOrder);
+        1e3 * points, pointsAnchor / points, triangleAnchor / points,
+        pointFloor > 0 ? points / pointFloor : 0.0, 1e3 * cellOrder, points / cellOrder);
     }
   }
   for (const Mesh& mesh : Meshes())

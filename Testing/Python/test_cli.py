@@ -5,6 +5,7 @@ images follow from geometry. Outputs are read back and checked against values co
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 
@@ -742,3 +743,38 @@ def test_progress_bar_is_redrawn_in_place_on_a_terminal():
     assert terminal.text.count("\r") == 3
     assert "\rwork [########                      ]  25%" in terminal.text
     assert terminal.text.endswith("work [" + "#" * 30 + "] 100%\n")
+
+
+def ladder_backend(environment, tmp_path, smp_backend, *args):
+    """The 'SMP backend X, N threads' the normals ladder of ``phongvtk ARGS`` reports, run with
+    VTK_SMP_BACKEND_IN_USE = smp_backend (None: unset)."""
+    env = dict(environment)
+    env.pop("VTK_SMP_BACKEND_IN_USE", None)
+    if smp_backend:
+        env["VTK_SMP_BACKEND_IN_USE"] = smp_backend
+    result = subprocess.run([sys.executable, "-m", "phongvtk", *args], cwd=tmp_path, env=env,
+                            capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr
+    found = re.search(r"SMP backend (\w+), (\d+) threads", result.stdout)
+    assert found, result.stdout
+    return found.group(1), int(found.group(2))
+
+
+def test_threads_every_core_by_default_one_is_sequential(environment, tmp_path):
+    ladder = ("bench", "--only", "normals", "--quick")
+    cores = len(os.sched_getaffinity(0))
+    backend, threads = ladder_backend(environment, tmp_path, None, *ladder)
+    if cores > 1:
+        assert (backend, threads) == ("STDThread", cores)
+    assert ladder_backend(environment, tmp_path, None, "--threads", "1", *ladder) == (
+        "Sequential", 1)
+    assert ladder_backend(environment, tmp_path, None, *ladder, "--threads", "2") == (
+        "STDThread", 2)
+
+
+def test_threads_default_keeps_the_backend_the_environment_names(environment, tmp_path):
+    ladder = ("bench", "--only", "normals", "--quick")
+    assert ladder_backend(environment, tmp_path, "Sequential", *ladder)[0] == "Sequential"
+    # An explicit --threads wins over the environment.
+    assert ladder_backend(environment, tmp_path, "Sequential", *ladder, "--threads", "2") == (
+        "STDThread", 2)
