@@ -325,8 +325,11 @@ struct PointNormalPass
                 {
                   if (spans[b].Last >= range.First && spans[b].First < range.First + range.Count)
                   {
-                    this->ScatterPolygons<A>(
-                      offsets, conn, b * PolyBlock, std::min(numPolys, (b + 1) * PolyBlock), range);
+                    // A block inside the range needs no test of its corners.
+                    const bool inside =
+                      spans[b].First >= range.First && spans[b].Last < range.First + range.Count;
+                    this->ScatterPolygons<A>(offsets, conn, b * PolyBlock,
+                      std::min(numPolys, (b + 1) * PolyBlock), range, inside);
                   }
                 }
               });
@@ -415,7 +418,7 @@ struct PointNormalPass
   /// Adds the faces of polygons [begin, end) to a range's sums, triangles four at a time.
   template <Accuracy A, class Off, class Conn>
   void ScatterPolygons(const Off* offsets, const Conn* conn, vtkIdType begin, vtkIdType end,
-    const PointRange& range) const
+    const PointRange& range, bool inside) const
   {
     const T* pts = this->Points;
     const int weighting = this->Weighting;
@@ -437,13 +440,27 @@ struct PointNormalPass
             const Conn* ids = conn + offsets[cell];
             if (done & (1 << j))
             {
-              const double v[3] = { w[0][j], w[1][j], w[2][j] };
-              const int top = range.Invariant ? InvariantSums::TopOf(v, 0) : 0;
+              const detail::V4 face = { w[0][j], w[1][j], w[2][j], 0.0 };
+              if (range.Sums)
+              {
+                for (int i = 0; i < 3; ++i)
+                {
+                  const vtkIdType id = static_cast<vtkIdType>(ids[i]);
+                  if (inside || range.Contains(id))
+                  {
+                    range.Sums[id - range.First].Add(face);
+                  }
+                }
+                continue;
+              }
+              const double v[3] = { face[0], face[1], face[2] };
+              const int top = InvariantSums::TopOf(v, 0);
               for (int i = 0; i < 3; ++i)
               {
-                if (range.Contains(static_cast<vtkIdType>(ids[i])))
+                const vtkIdType id = static_cast<vtkIdType>(ids[i]);
+                if (inside || range.Contains(id))
                 {
-                  range.Add(static_cast<vtkIdType>(ids[i]), v, 0, top);
+                  range.Invariant->Add(static_cast<std::int32_t>(id - range.First), v, 0, top);
                 }
               }
               continue;

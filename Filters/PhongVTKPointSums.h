@@ -24,6 +24,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace phongvtk
@@ -37,21 +38,41 @@ namespace phongvtk
 struct ScaledSum
 {
   double S[3] = { 0.0, 0.0, 0.0 };
-  int E = 0;
+  double Exponent = 0.0; // E, an integer held as a double: the four doubles add as one register
+
+  int E() const { return static_cast<int>(this->Exponent); }
 
   PHONGVTK_INLINE void Add(const double v[3], int e)
   {
-    if (e != this->E)
+    if (static_cast<double>(e) != this->Exponent)
     {
       this->AddScaled(v, e);
       return;
     }
-    // Contributions lie below 2^500 and the sum is renormalised below 2^500 whenever exponents
-    // differ, so plain additions (the common case) cannot overflow.
-    for (int c = 0; c < 3; ++c)
+    this->AddInPlace(detail::V4{ v[0], v[1], v[2], 0.0 });
+  }
+
+  /// Add() of (v0, v1, v2, 0) with exponent 0.
+  PHONGVTK_INLINE void Add(const detail::V4& v)
+  {
+    if (this->Exponent != 0.0)
     {
-      this->S[c] += v[c];
+      const double w[3] = { v[0], v[1], v[2] };
+      this->AddScaled(w, 0);
+      return;
     }
+    this->AddInPlace(v);
+  }
+
+  /// Contributions lie below 2^500 and the sum is renormalised below 2^500 whenever exponents
+  /// differ, so plain additions (the common case) cannot overflow. Lane 3 adds zero to the
+  /// exponent, which an integer-valued double keeps exactly.
+  PHONGVTK_INLINE void AddInPlace(const detail::V4& v)
+  {
+    detail::V4 sum;
+    std::memcpy(&sum, this, sizeof sum);
+    sum += v;
+    std::memcpy(this, &sum, sizeof sum);
   }
 
   /// Adds v * 2^e when e differs from the sum's exponent: the smaller of the two is scaled to
@@ -59,23 +80,24 @@ struct ScaledSum
   void AddScaled(const double v[3], int e)
   {
     using detail::Scale2;
+    const int own = this->E();
     if (this->S[0] == 0.0 && this->S[1] == 0.0 && this->S[2] == 0.0)
     {
       std::copy(v, v + 3, this->S);
-      this->E = e;
+      this->Exponent = e;
     }
-    else if (e > this->E)
+    else if (e > own)
     {
-      const int d = std::max(this->E - e, -2200);
+      const int d = std::max(own - e, -2200);
       for (int c = 0; c < 3; ++c)
       {
         this->S[c] = Scale2(Scale2(this->S[c], d / 2), d - d / 2) + v[c];
       }
-      this->E = e;
+      this->Exponent = e;
     }
     else
     {
-      const int d = std::max(e - this->E, -2200);
+      const int d = std::max(e - own, -2200);
       for (int c = 0; c < 3; ++c)
       {
         this->S[c] += Scale2(Scale2(v[c], d / 2), d - d / 2);
@@ -98,10 +120,11 @@ struct ScaledSum
       {
         x = detail::Scale2(x, -k);
       }
-      this->E += k;
+      this->Exponent = this->E() + k;
     }
   }
 };
+static_assert(sizeof(ScaledSum) == sizeof(detail::V4), "ScaledSum adds as one register");
 
 /**
  * Order-independent sums of the contributions to a block of points [0, Size). Add() records
@@ -160,26 +183,29 @@ public:
     this->Grid.resize(n);
     for (std::size_t p = 0; p < n; ++p)
     {
-      this->Grid[p] = GridOf(this->Count[p]);
+      this->Grid[p] = GridOf(this->Count[p], this->Count[p] > 0 ? -this->Top[p] - 1 : 0);
     }
+    const detail::V4i firstThree = { -1, -1, -1, 0 };
     for (const Item& item : this->Items)
     {
       const std::size_t p = static_cast<std::size_t>(item.Point);
       Part& part = this->Parts[p];
-      const Magic m = this->Grid[p];
-      V4 x;
-      const int k = item.E - this->Top[p] - 1;
-      if (k >= -1022 && k <= 1023)
+      const Magic& m = this->Grid[p];
+      // The item's four doubles are V and (E, Point): keep V, zero the fourth lane.
+      V4 raw;
+      std::memcpy(&raw, &item, sizeof raw);
+      V4 x = reinterpret_cast<V4>(reinterpret_cast<detail::V4i>(raw) & firstThree);
+      if (item.E == 0 && m.Scale != 0.0)
       {
-        x = V4{ item.V[0], item.V[1], item.V[2], 0.0 } * detail::Pow2(k);
+        x *= m.Scale; // exact: a power of two within the normal range
       }
       else
       {
+        const int k = item.E - this->Top[p] - 1;
         for (int c = 0; c < 3; ++c)
         {
           x[c] = detail::Scale2(item.V[c], k);
         }
-        x[3] = 0.0;
       }
       // fl(x + M) - M is x rounded to M's ulp, a function of x alone (ties to even), and exact.
       const V4 high = (x + m.High) - m.High;
@@ -195,12 +221,14 @@ public:
     }
   }
 
-  /// The two rounding constants of a point with `count` contributions: 1.5 * 2^52 times the
-  /// grid of the high and of the low part.
+  /// The two rounding constants of a point with `count` contributions (1.5 * 2^52 times the grid
+  /// of the high and of the low part), and 2^k, the scale of its contributions of exponent 0
+  /// (zero when 2^k is not a normal double).
   struct Magic
   {
     double High;
     double Low;
+    double Scale;
   };
 
   /**
@@ -208,19 +236,25 @@ public:
    * in magnitude: the high part is rounded onto the grid 2^(h-53), the rest onto 2^(2h-106);
    * sums of count such parts stay below 2^53 of their grid, hence exact.
    */
-  static Magic GridOf(std::int32_t count)
+  static Magic GridOf(std::int32_t count, int k)
   {
-    const int h = count > 0 ? 33 - __builtin_clz(static_cast<unsigned>(count)) : 2;
-    return Magic{ 0x1.8p0 * detail::Pow2(h - 1), 0x1.8p0 * detail::Pow2(2 * h - 54) };
+    int h = 2;
+    for (std::uint32_t c = static_cast<std::uint32_t>(count); c > 1; c >>= 1)
+    {
+      ++h;
+    }
+    return Magic{ 0x1.8p0 * detail::Pow2(h - 1), 0x1.8p0 * detail::Pow2(2 * h - 54),
+      k >= -1022 && k <= 1023 ? detail::Pow2(k) : 0.0 };
   }
 
 private:
-  struct Item
+  struct Item // four doubles' worth: loaded as one register
   {
     double V[3];
     int E;
     std::int32_t Point;
   };
+  static_assert(sizeof(Item) == sizeof(detail::V4), "an item is one register");
   struct Part
   {
     detail::V4 Hi = {}, Lo = {}; // the exact sums of the high and of the low parts
