@@ -35,7 +35,8 @@
  * Everything the filter does not compute passes through: points, all cells, every other point,
  * cell and field array. Work is split with vtkSMPTools and the output is bitwise identical for
  * every thread count and SMP backend. With PieceInvariant (default) a point normal does not
- * depend on the order of the cells nor on the partition of the mesh among processes either.
+ * depend on the order of the cells nor on the partition of the mesh among processes either: it is
+ * a function of the set of its faces, their contributions summed exactly and rounded once.
  *
  * @sa vtkPolyDataNormals vtkTriangleMeshPointNormals vtkPolygon
  */

@@ -235,3 +235,29 @@ TEST(PointSums, AHundredThousandFacesAtOnePoint)
   std::mt19937_64 random(5);
   CheckAgainstExact(RandomFan(random, 100000, 2, 0), random);
 }
+
+TEST(PointSums, DoublesAtBothEndsOfTheRangeWithoutAnExponent)
+{
+  // Exponent 0 throughout: the largest contribution near 2^1023 or a point whose contributions
+  // are all subnormal takes the scaling that leaves the normal range.
+  std::mt19937_64 random(13);
+  std::vector<Contribution> huge = RandomFan(random, 6, 3, 0);
+  for (Contribution& c : huge)
+  {
+    for (double& v : c.V)
+    {
+      v = std::ldexp(v, 1018);
+    }
+  }
+  huge[2].V[0] = 0x1.fffffffffffffp1023;
+  CheckAgainstExact(huge, random);
+  std::vector<Contribution> tiny = RandomFan(random, 6, 3, 0);
+  for (Contribution& c : tiny)
+  {
+    for (double& v : c.V)
+    {
+      v = std::ldexp(v, -1060); // subnormal
+    }
+  }
+  CheckAgainstExact(tiny, random);
+}
