@@ -89,18 +89,6 @@ struct PointRange
     }
     this->Invariant->Add(static_cast<std::int32_t>(id - this->First), v, e);
   }
-
-  /// Add() of a face's contribution to one of its corners, with `top` =
-  /// InvariantSums::TopOf(v, e) when piece-invariant (computed once for all corners).
-  PHONGVTK_INLINE void Add(vtkIdType id, const double v[3], int e, int top) const
-  {
-    if (this->Sums)
-    {
-      this->Sums[id - this->First].Add(v, e);
-      return;
-    }
-    this->Invariant->Add(static_cast<std::int32_t>(id - this->First), v, e, top);
-  }
 };
 
 /**
@@ -235,17 +223,6 @@ struct PointNormalPass
   static constexpr vtkIdType PolyBlock = 1024;
 
   /**
-   * Point normals, in parallel and bitwise the same for any number of threads. The points are
-   * split into ranges, one task each; a task visits every block of polygons that uses one of its
-   * points, recomputes those faces and adds their contributions to its own points only: in cell
-   * order, or, piece-invariant, in an order set by their values (NormalizeSums). A point's normal
-   * is therefore the same however the points are split (and, piece-invariant, however the cells
-   * are ordered or the mesh is partitioned among processes), and no per-face buffer makes a
-   * round trip through memory. Blocks record
-   * the span of point ids they use, so on a coherent mesh a task visits only the blocks around
-   * its range; on an incoherent one the ranges grow until the repeated face work stays bounded.
-   */
-  /**
    * The first polygon (index in the polygon array) with a point id outside [0, number of points),
    * or -1: found from the blocks' id spans, which Run() then uses.
    */
@@ -278,6 +255,17 @@ struct PointNormalPass
     return first;
   }
 
+  /**
+   * Point normals, in parallel and bitwise the same for any number of threads. The points are
+   * split into ranges, one task each; a task visits every block of polygons that uses one of its
+   * points, recomputes those faces and adds their contributions to its own points only: in cell
+   * order, or, piece-invariant, into sums that do not depend on the order (InvariantSums, which
+   * keeps the range's contributions for a second pass). A point's normal is therefore the same
+   * however the points are split (and, piece-invariant, however the cells are ordered or the mesh
+   * is partitioned among processes). Blocks record the span of point ids they use, so on a
+   * coherent mesh a task visits only the blocks around its range; on an incoherent one the
+   * ranges grow until the repeated face work stays bounded.
+   */
   template <Accuracy A>
   void Run(O* pointNormals)
   {
@@ -346,12 +334,12 @@ struct PointNormalPass
   /// The smallest and largest point id of every block of PolyBlock polygons (once).
   void ComputeSpans()
   {
-    const vtkIdType numPolys = this->Polys ? this->Polys->GetNumberOfCells() : 0;
-    const vtkIdType numBlocks = (numPolys + PolyBlock - 1) / PolyBlock;
     if (this->SpansReady)
     {
       return;
     }
+    const vtkIdType numPolys = this->Polys ? this->Polys->GetNumberOfCells() : 0;
+    const vtkIdType numBlocks = (numPolys + PolyBlock - 1) / PolyBlock;
     this->SpansReady = true;
     this->Spans.resize(static_cast<std::size_t>(numBlocks));
     if (numPolys == 0)
