@@ -10,6 +10,7 @@
 
 #include "PhongVTKAreaVector.h"
 #include "PhongVTKCells.h"
+#include "PhongVTKParallel.h"
 #include "PhongVTKPointSums.h"
 #include "vtkPolygonNormals.h"
 
@@ -285,7 +286,8 @@ struct PointNormalPass
     };
     vtkSMPThreadLocal<Buffers> localBuffers;
     vtkCellArray* strips = this->Strips;
-    vtkSMPTools::For(0, numRanges, 1,
+    phongvtk::For(
+      0, numRanges, numPolys,
       [&](vtkIdType begin, vtkIdType end)
       {
         Buffers& buffers = localBuffers.Local();
@@ -328,7 +330,8 @@ struct PointNormalPass
           }
           NormalizeSums(range, pointNormals);
         }
-      });
+      },
+      1);
   }
 
   /// The smallest and largest point id of every block of PolyBlock polygons (once).
@@ -349,7 +352,7 @@ struct PointNormalPass
     this->Polys->Visit(RawCells{},
       [&](const auto* offsets, const auto* conn)
       {
-        vtkSMPTools::For(0, numBlocks,
+        phongvtk::For(0, numBlocks, numPolys,
           [&](vtkIdType begin, vtkIdType end)
           {
             for (vtkIdType b = begin; b < end; ++b)
@@ -378,7 +381,7 @@ struct PointNormalPass
    */
   vtkIdType PointRangeSize(const std::vector<IdSpan>& spans, vtkIdType numPolys) const
   {
-    const vtkIdType threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+    const vtkIdType threads = phongvtk::Threads(numPolys);
     const vtkIdType widest = std::max<vtkIdType>(1, (this->NumberOfPoints + threads - 1) / threads);
     // At least four ranges a thread, so that small meshes keep both threads busy too.
     vtkIdType size = std::max<vtkIdType>(1024,

@@ -3,6 +3,7 @@
 #include "PhongVTKAreaVector.h"
 #include "PhongVTKCells.h"
 #include "PhongVTKOptions.h"
+#include "PhongVTKParallel.h"
 #include "PhongVTKVisibleArea.h"
 
 #include "vtkCamera.h"
@@ -72,11 +73,11 @@ struct CellPass
   void Run(const Off* offsets, const Conn* conn, vtkIdType n, vtkIdType first, bool strips,
     double progressBegin, double progressEnd) const
   {
-    const vtkIdType block = std::max<vtkIdType>(65536, (n + 9) / 10);
+    const vtkIdType block = phongvtk::ProgressBlock(n);
     for (vtkIdType begin = 0; begin < n && !this->Filter->GetAbortExecute(); begin += block)
     {
       const vtkIdType end = std::min(n, begin + block);
-      vtkSMPTools::For(begin, end,
+      phongvtk::For(begin, end, n,
         [&](vtkIdType b, vtkIdType e)
         {
           CellCounts& counts = this->Counts->Local();
