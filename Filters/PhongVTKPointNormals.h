@@ -11,6 +11,7 @@
 #include "PhongVTKAreaVector.h"
 #include "PhongVTKCells.h"
 #include "PhongVTKParallel.h"
+#include "PhongVTKPointRanges.h"
 #include "PhongVTKPointSums.h"
 #include "vtkPolygonNormals.h"
 
@@ -196,13 +197,6 @@ void NormalizeSums(const PointRange& range, O* normals)
     { WriteNormal(sum, normals + 3 * (range.First + i)); });
 }
 
-/// Smallest and largest point id used by a block of polygons (empty: First > Last).
-struct IdSpan
-{
-  vtkIdType First;
-  vtkIdType Last;
-};
-
 /**
  * The point pass for point type T and output type O: `Run<A>(normals)` writes a unit normal (or
  * zero) for every point. The cells' point ids have been checked.
@@ -221,7 +215,7 @@ struct PointNormalPass
   bool SpansReady = false;
 
   /// Polygons per block of the point pass.
-  static constexpr vtkIdType PolyBlock = 1024;
+  static constexpr vtkIdType PolyBlock = CellBlock;
 
   /**
    * The first polygon (index in the polygon array) with a point id outside [0, number of points),
@@ -275,7 +269,7 @@ struct PointNormalPass
     const vtkIdType numPolys = polys ? polys->GetNumberOfCells() : 0;
     const vtkIdType numBlocks = (numPolys + PolyBlock - 1) / PolyBlock;
     const std::vector<IdSpan>& spans = this->Spans;
-    const vtkIdType rangeSize = this->PointRangeSize(spans, numPolys);
+    const vtkIdType rangeSize = this->RangeSize(spans, numPolys);
     const vtkIdType numRanges = (this->NumberOfPoints + rangeSize - 1) / rangeSize;
     this->Filter->UpdateProgress(0.6);
 
@@ -313,11 +307,10 @@ struct PointNormalPass
               {
                 for (vtkIdType b = 0; b < numBlocks; ++b)
                 {
-                  if (spans[b].Last >= range.First && spans[b].First < range.First + range.Count)
+                  if (spans[b].Reaches(range.First, range.Count))
                   {
                     // A block inside the range needs no test of its corners.
-                    const bool inside =
-                      spans[b].First >= range.First && spans[b].Last < range.First + range.Count;
+                    const bool inside = spans[b].Inside(range.First, range.Count);
                     this->ScatterPolygons<A>(offsets, conn, b * PolyBlock,
                       std::min(numPolys, (b + 1) * PolyBlock), range, inside);
                   }
@@ -337,73 +330,19 @@ struct PointNormalPass
   /// The smallest and largest point id of every block of PolyBlock polygons (once).
   void ComputeSpans()
   {
-    if (this->SpansReady)
+    if (!this->SpansReady)
     {
-      return;
+      this->Spans = BlockSpans(this->Polys);
+      this->SpansReady = true;
     }
-    const vtkIdType numPolys = this->Polys ? this->Polys->GetNumberOfCells() : 0;
-    const vtkIdType numBlocks = (numPolys + PolyBlock - 1) / PolyBlock;
-    this->SpansReady = true;
-    this->Spans.resize(static_cast<std::size_t>(numBlocks));
-    if (numPolys == 0)
-    {
-      return;
-    }
-    this->Polys->Visit(RawCells{},
-      [&](const auto* offsets, const auto* conn)
-      {
-        phongvtk::For(0, numBlocks, numPolys,
-          [&](vtkIdType begin, vtkIdType end)
-          {
-            for (vtkIdType b = begin; b < end; ++b)
-            {
-              using Id = std::remove_cv_t<std::remove_pointer_t<decltype(conn)>>;
-              Id first = std::numeric_limits<Id>::max();
-              Id last = std::numeric_limits<Id>::lowest();
-              const auto stop = offsets[std::min(numPolys, (b + 1) * PolyBlock)];
-              for (auto k = offsets[b * PolyBlock]; k < stop; ++k)
-              {
-                first = std::min(first, conn[k]);
-                last = std::max(last, conn[k]);
-              }
-              this->Spans[static_cast<std::size_t>(b)] =
-                stop > offsets[b * PolyBlock] ? IdSpan{ first, last } : IdSpan{ 0, -1 };
-            }
-          });
-      });
   }
 
-  /**
-   * Points per range: small enough that a range's sums stay in cache and the ranges keep every
-   * thread busy, large enough that the polygons visited by more than one range (those whose
-   * span crosses a range boundary) add at most a quarter to the face work. At worst one range
-   * per thread: each then computes every face once, in parallel.
-   */
-  vtkIdType PointRangeSize(const std::vector<IdSpan>& spans, vtkIdType numPolys) const
+  /// Points per range (PointRangeSize): a range's invariant sums keep every contribution until
+  /// the range is done, so their ranges are smaller.
+  vtkIdType RangeSize(const std::vector<IdSpan>& spans, vtkIdType numPolys) const
   {
-    const vtkIdType threads = phongvtk::Threads(numPolys);
-    const vtkIdType widest = std::max<vtkIdType>(1, (this->NumberOfPoints + threads - 1) / threads);
-    // At least four ranges a thread, so that small meshes keep both threads busy too.
-    vtkIdType size = std::max<vtkIdType>(1024,
-      std::min<vtkIdType>(this->PieceInvariant ? 4096 : 16384,
-        (this->NumberOfPoints + 4 * threads - 1) / (4 * threads)));
-    size = std::min(size, widest);
-    for (; size < widest; size *= 4)
-    {
-      vtkIdType visits = 0;
-      for (const IdSpan& span : spans)
-      {
-        if (span.First <= span.Last)
-        {
-          visits += span.Last / size - span.First / size + 1;
-        }
-      }
-      if (visits * PolyBlock <= numPolys + numPolys / 4 + PolyBlock)
-      {
-        return size;
-      }
-    }
-    return widest;
+    return PointRangeSize(spans, numPolys, this->NumberOfPoints, phongvtk::Threads(numPolys),
+      this->PieceInvariant ? 4096 : 16384);
   }
 
   /// Adds the faces of polygons [begin, end) to a range's sums, triangles four at a time.

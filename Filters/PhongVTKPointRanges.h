@@ -1,0 +1,118 @@
+/**
+ * @file PhongVTKPointRanges.h
+ * @brief Private to PhongVTK::Filters: splitting a pass that gathers per point (point normals, the
+ * edges under their smaller point id) into ranges of point ids, one task each, without a map
+ * from points to cells. Every block of CellBlock cells records the span of point ids it uses;
+ * a range's task visits only the blocks whose span reaches into it. On a coherent mesh (ids of a
+ * neighbourhood close together, as sources and most readers deliver them) that is the blocks
+ * around the range; on an incoherent one the ranges grow until the repeated block visits stay
+ * bounded.
+ */
+#ifndef PhongVTKPointRanges_h
+#define PhongVTKPointRanges_h
+
+#include "PhongVTKCells.h"
+#include "PhongVTKParallel.h"
+
+#include "vtkCellArray.h"
+#include "vtkType.h"
+
+#include <algorithm>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+namespace phongvtk
+{
+/// Cells per block of a span.
+constexpr vtkIdType CellBlock = 1024;
+
+/// Smallest and largest point id used by a block of cells (empty: First > Last).
+struct IdSpan
+{
+  vtkIdType First;
+  vtkIdType Last;
+
+  /// Whether the block uses a point id in [first, first + count).
+  bool Reaches(vtkIdType first, vtkIdType count) const
+  {
+    return this->Last >= first && this->First < first + count;
+  }
+
+  /// Whether every point id of the block lies in [first, first + count).
+  bool Inside(vtkIdType first, vtkIdType count) const
+  {
+    return this->First >= first && this->Last < first + count;
+  }
+};
+
+/// The span of every block of CellBlock cells of `cells` (in parallel).
+inline std::vector<IdSpan> BlockSpans(vtkCellArray* cells)
+{
+  const vtkIdType numCells = cells ? cells->GetNumberOfCells() : 0;
+  const vtkIdType numBlocks = (numCells + CellBlock - 1) / CellBlock;
+  std::vector<IdSpan> spans(static_cast<std::size_t>(numBlocks));
+  if (numCells == 0)
+  {
+    return spans;
+  }
+  cells->Visit(RawCells{},
+    [&](const auto* offsets, const auto* conn)
+    {
+      phongvtk::For(0, numBlocks, numCells,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType b = begin; b < end; ++b)
+          {
+            using Id = std::remove_cv_t<std::remove_pointer_t<decltype(conn)>>;
+            Id first = std::numeric_limits<Id>::max();
+            Id last = std::numeric_limits<Id>::lowest();
+            const auto stop = offsets[std::min(numCells, (b + 1) * CellBlock)];
+            for (auto k = offsets[b * CellBlock]; k < stop; ++k)
+            {
+              first = std::min(first, conn[k]);
+              last = std::max(last, conn[k]);
+            }
+            spans[static_cast<std::size_t>(b)] =
+              stop > offsets[b * CellBlock] ? IdSpan{ first, last } : IdSpan{ 0, -1 };
+          }
+        });
+    });
+  return spans;
+}
+
+/**
+ * Points per range for a pass over `numCells` cells with block spans `spans`: at most `cap` (a
+ * range's per-point state stays in cache) and at least four ranges a thread, so that small
+ * meshes keep every thread busy too; then grown (times four) until the blocks visited by more
+ * than one range (those whose span crosses a range boundary) add at most a quarter to the work.
+ * At worst one range per thread: each then visits every block once, in parallel.
+ */
+inline vtkIdType PointRangeSize(const std::vector<IdSpan>& spans, vtkIdType numCells,
+  vtkIdType numPoints, vtkIdType threads, vtkIdType cap)
+{
+  const vtkIdType widest = std::max<vtkIdType>(1, (numPoints + threads - 1) / threads);
+  vtkIdType size = std::max<vtkIdType>(
+    1024, std::min<vtkIdType>(cap, (numPoints + 4 * threads - 1) / (4 * threads)));
+  size = std::min(size, widest);
+  for (; size < widest; size *= 4)
+  {
+    vtkIdType visits = 0;
+    for (const IdSpan& span : spans)
+    {
+      if (span.First <= span.Last)
+      {
+        visits += span.Last / size - span.First / size + 1;
+      }
+    }
+    if (visits * CellBlock <= numCells + numCells / 4 + CellBlock)
+    {
+      return size;
+    }
+  }
+  return widest;
+}
+} // namespace phongvtk
+
+#endif
+// VTK-HeaderTest-Exclude: PhongVTKPointRanges.h
