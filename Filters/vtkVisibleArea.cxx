@@ -2,6 +2,7 @@
 
 #include "PhongVTKAreaVector.h"
 #include "PhongVTKCells.h"
+#include "PhongVTKEdgeSum.h"
 #include "PhongVTKOptions.h"
 #include "PhongVTKParallel.h"
 #include "PhongVTKVisibleArea.h"
@@ -137,179 +138,6 @@ struct CellPass
     return { phongvtk::VisibleAreaOfVector<A, T>(vertex, n, this->TheView, h, 1),
       phongvtk::StatusOk };
   }
-};
-
-/**
- * sum w over the polygons from the edges that do not cancel: a polygon's area vector is
- * sum_i p_i x p_(i+1) over its directed edges, so every edge also used in the opposite direction
- * cancels exactly; the rest (a closed, consistently oriented surface has none) is summed in
- * double-double. Edges are bucketed under their smaller point id (counting sort), each bucket
- * sorted by the other id.
- */
-template <class T>
-class EdgeSum
-{
-public:
-  EdgeSum(const T* points, vtkIdType numberOfPoints)
-    : Points(points)
-    , Start(static_cast<std::size_t>(numberOfPoints) + 1, 0)
-  {
-  }
-
-  /// Visits every directed edge of the surface cells that have a usable area vector: first to
-  /// count (fill = false), then to fill.
-  template <class EdgeFn>
-  static void ForEachEdge(vtkPolyData* input, const unsigned char* status, const EdgeFn& edge)
-  {
-    const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
-    vtkCellArray* arrays[2] = { input->GetPolys(), input->GetStrips() };
-    vtkIdType first = firstPoly;
-    for (int strips = 0; strips < 2; ++strips)
-    {
-      vtkCellArray* cells = arrays[strips];
-      const vtkIdType n = cells ? cells->GetNumberOfCells() : 0;
-      if (n == 0)
-      {
-        continue;
-      }
-      cells->Visit(RawCells{},
-        [&](const auto* offsets, const auto* conn)
-        {
-          for (vtkIdType cell = 0; cell < n; ++cell)
-          {
-            const std::int64_t m = offsets[cell + 1] - offsets[cell];
-            if (status[first + cell] == phongvtk::StatusNonFinite || m < 2)
-            {
-              continue;
-            }
-            const auto* ids = conn + offsets[cell];
-            auto id = [&](std::int64_t i)
-            {
-              return static_cast<vtkIdType>(
-                ids[strips ? phongvtk::StripOutlineIndex(i % m, m) : i % m]);
-            };
-            for (std::int64_t i = 0; i < m; ++i)
-            {
-              edge(id(i), id(i + 1));
-            }
-          }
-        });
-      first += n;
-    }
-  }
-
-  /// The non-cancelling part of sum w, each component as a double-double.
-  void Compute(vtkPolyData* input, const unsigned char* status, DD sum[3])
-  {
-    std::vector<unsigned char> used(this->Start.size() - 1, 0);
-    ForEachEdge(input, status,
-      [&](vtkIdType a, vtkIdType b)
-      {
-        if (a != b)
-        {
-          ++this->Start[static_cast<std::size_t>(std::min(a, b)) + 1];
-          used[static_cast<std::size_t>(a)] = 1;
-        }
-      });
-    for (std::size_t i = 1; i < this->Start.size(); ++i)
-    {
-      this->Start[i] += this->Start[i - 1];
-    }
-    // Key: the larger id times two, plus one for the direction small -> large.
-    std::vector<vtkIdType> keys(static_cast<std::size_t>(this->Start.back()));
-    std::vector<vtkIdType> fill(this->Start.begin(), this->Start.end() - 1);
-    ForEachEdge(input, status,
-      [&](vtkIdType a, vtkIdType b)
-      {
-        if (a != b)
-        {
-          const vtkIdType low = std::min(a, b);
-          keys[static_cast<std::size_t>(fill[low]++)] = 2 * std::max(a, b) + (a < b ? 1 : 0);
-        }
-      });
-    this->Scale = this->ScaleExponent(used);
-    sum[0] = sum[1] = sum[2] = DD{ 0.0, 0.0 };
-    for (std::size_t low = 0; low + 1 < this->Start.size(); ++low)
-    {
-      auto begin = keys.begin() + this->Start[low];
-      auto end = keys.begin() + this->Start[low + 1];
-      // Buckets hold a handful of edges: insertion sort.
-      for (auto it = begin + (begin != end ? 1 : 0); it < end; ++it)
-      {
-        const vtkIdType key = *it;
-        auto hole = it;
-        for (; hole != begin && *(hole - 1) > key; --hole)
-        {
-          *hole = *(hole - 1);
-        }
-        *hole = key;
-      }
-      for (auto it = begin; it != end;)
-      {
-        const vtkIdType high = *it / 2;
-        long net = 0;
-        for (; it != end && *it / 2 == high; ++it)
-        {
-          net += (*it & 1) ? 1 : -1;
-        }
-        for (long k = 0; k < std::labs(net); ++k)
-        {
-          this->AddCross(static_cast<vtkIdType>(low), high, net > 0, sum);
-        }
-      }
-    }
-  }
-
-  /// The sum is in units of 2^(2 Scale).
-  int Scale = 0;
-
-private:
-  /// Power of two bringing the largest coordinate used near 1 when products could overflow or
-  /// underflow.
-  int ScaleExponent(const std::vector<unsigned char>& used) const
-  {
-    double largest = 0.0;
-    for (std::size_t i = 0; i < used.size(); ++i)
-    {
-      if (used[i])
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          largest = std::max(largest, std::fabs(static_cast<double>(this->Points[3 * i + c])));
-        }
-      }
-    }
-    if (largest == 0.0 || (largest >= 0x1p-400 && largest <= 0x1p400))
-    {
-      return 0;
-    }
-    return phongvtk::detail::Exponent2(largest);
-  }
-
-  /// sum += (p_a x p_b) or its opposite, every product split exactly (TwoProduct).
-  void AddCross(vtkIdType a, vtkIdType b, bool positive, DD sum[3]) const
-  {
-    using namespace phongvtk::detail;
-    double p[3], q[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      p[c] = Scale2(static_cast<double>(this->Points[3 * a + c]), -this->Scale);
-      q[c] = Scale2(static_cast<double>(this->Points[3 * b + c]), -this->Scale);
-    }
-    const double sign = positive ? 1.0 : -1.0;
-    for (int c = 0; c < 3; ++c)
-    {
-      const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-      double h1, l1, h2, l2;
-      TwoProduct(p[c1], q[c2], h1, l1);
-      TwoProduct(p[c2], q[c1], h2, l2);
-      sum[c] = Add(sum[c], DD{ sign * h1, sign * l1 });
-      sum[c] = Add(sum[c], DD{ -sign * h2, -sign * l2 });
-    }
-  }
-
-  const T* Points;
-  std::vector<vtkIdType> Start;
 };
 
 vtkSmartPointer<vtkDoubleArray> NewScalar(const char* name, int components, const double* values)
@@ -471,8 +299,15 @@ bool Execute(vtkVisibleArea* self, vtkPolyData* input, const T* points, const Vi
   }
   if (self->GetComputeMaxVisibleArea())
   {
-    EdgeSum<T> edges(points, input->GetNumberOfPoints());
-    edges.Compute(input, status.data(), sumW);
+    const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
+    const std::vector<phongvtk::SurfaceCells> surfaces = { { input->GetPolys(), firstPoly, false },
+      { input->GetStrips(), firstPoly + input->GetNumberOfPolys(), true } };
+    phongvtk::EdgeSum<T> edges(points, input->GetNumberOfPoints());
+    const unsigned char* s = status.data();
+    edges.Sum(
+      edges.NetEdges(
+        surfaces, [s](vtkIdType cell) { return s[cell] == phongvtk::StatusNonFinite; }, self),
+      sumW);
     sumScale = edges.Scale;
   }
   return true;
