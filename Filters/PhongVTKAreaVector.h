@@ -1215,9 +1215,40 @@ PHONGVTK_INLINE void DoubleTriangles4(const T* const corner[3][4], TriangleLanes
   NormalizeDouble4(w, out);
 }
 
-/// COMPENSATED and EXACT: CompensatedArith's Difference, Add and finish, lane by lane.
+/// EXACT's area vectors of four triangles: hi + lo with CompensatedArith's bound per component.
+struct CertifiedLanes
+{
+  V4 Hi[3], Lo[3];
+  V4 Bound[3];     // |(hi + lo) - w_c| (CompensatedArith::Bound for n = 3)
+  V4 Permanent[3]; // sum of |products|: zero when w_c is exactly zero
+  V4i Tiny;        // a non-zero difference below 2^-480: a product may have underflowed
+  V4i Certified;   // FinishCertified: every component certified to 2^-56 (or exactly zero)
+};
+
+/// CompensatedArith::Bound and FinishCertified for n = 3, lane by lane.
+PHONGVTK_INLINE void FinishCertified4(const V4 sum[3], const V4 err[3], const V4 permanent[3],
+  const V4 errMagnitude[3], V4i tiny, CertifiedLanes& w)
+{
+  const double triangles = 2.0;
+  const double underflow = 32.0 * triangles * 0x1p-1074;
+  w.Tiny = tiny;
+  w.Certified = ~tiny;
+  for (int c = 0; c < 3; ++c)
+  {
+    TwoSum(sum[c], err[c], w.Hi[c], w.Lo[c]);
+    w.Bound[c] = 64.0 * 0x1p-106 * permanent[c] + (1.01 * triangles * 0x1p-53) * errMagnitude[c] +
+      0x1p-53 * Abs(err[c]) + underflow;
+    w.Permanent[c] = permanent[c];
+    w.Certified &=
+      (permanent[c] <= 0x1p900) & ((permanent[c] == 0.0) | (w.Bound[c] <= 0x1p-56 * Abs(w.Hi[c])));
+  }
+}
+
+/// COMPENSATED and EXACT: CompensatedArith's Difference, Add and finish, lane by lane; EXACT's
+/// certified area vectors also in `certified` when given.
 template <class T, bool Exact>
-PHONGVTK_INLINE void CompensatedTriangles4(const T* const corner[3][4], TriangleLanes& out)
+PHONGVTK_INLINE void CompensatedTriangles4(
+  const T* const corner[3][4], TriangleLanes& out, CertifiedLanes* certifiedOut = nullptr)
 {
   V4 aHi[3], aLo[3], bHi[3], bLo[3];
   // Lanes with a non-zero difference below 2^-480 (HasTinyDifference): a product that underflowed
@@ -1263,17 +1294,15 @@ PHONGVTK_INLINE void CompensatedTriangles4(const T* const corner[3][4], Triangle
     return;
   }
   // CompensatedArith::FinishCertified for n = 3, then NormalizeFaithful.
-  const double triangles = 2.0;
-  const double underflow = 32.0 * triangles * 0x1p-1074;
-  V4 hi[3], lo[3];
-  V4i certified = ~tiny;
-  for (int c = 0; c < 3; ++c)
+  CertifiedLanes w;
+  FinishCertified4(sum, err, permanent, errMagnitude, tiny, w);
+  V4i certified = w.Certified;
+  V4* hi = w.Hi;
+  V4* lo = w.Lo;
+  if (certifiedOut)
   {
-    TwoSum(sum[c], err[c], hi[c], lo[c]);
-    const V4 bound = 64.0 * 0x1p-106 * permanent[c] +
-      (1.01 * triangles * 0x1p-53) * errMagnitude[c] + 0x1p-53 * Abs(err[c]) + underflow;
-    certified &=
-      (permanent[c] <= 0x1p900) & ((permanent[c] == 0.0) | (bound <= 0x1p-56 * Abs(hi[c])));
+    *certifiedOut = w;
+    return;
   }
   NormalizeFaithful4(hi, lo, out.Normal, out.Length);
   for (int c = 0; c < 3; ++c)
@@ -1281,6 +1310,17 @@ PHONGVTK_INLINE void CompensatedTriangles4(const T* const corner[3][4], Triangle
     out.Vector[c] = hi[c] + lo[c];
   }
   out.Done = LaneBits(certified) & InWindow(hi, 0x1p-500, 0x1p500);
+}
+} // namespace detail
+
+namespace detail
+{
+/// EXACT's certified area vectors of four triangles, without their normals.
+template <class T>
+PHONGVTK_INLINE void CertifiedAreaVectors4(const T* const corner[3][4], CertifiedLanes& w)
+{
+  TriangleLanes unused;
+  CompensatedTriangles4<T, true>(corner, unused, &w);
 }
 } // namespace detail
 

@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace phongvtk
@@ -42,6 +43,10 @@ struct View
   double Vector[3] = { 0.0, 0.0, 1.0 };
   /// 1 / |Vector| rounded (direction only).
   double InverseLength = 1.0;
+  /// |Vector| in double-double and 1 / Norm.Hi rounded (direction only; EXACT), as
+  /// detail::NormInWindow gives them: set by SetDirection.
+  detail::DD Norm = { 1.0, 0.0 };
+  double NormInverse = 1.0;
 };
 
 /// Visible area (v.w / 2) and the status of the area vector (NormalStatus values).
@@ -78,6 +83,25 @@ inline bool ScaleToUnitRange(double v[3])
   {
     v[c] = Scale2(v[c], -k);
   }
+  return true;
+}
+
+/**
+ * Makes `view` a direction view along d (finite, non-zero): scaled into [1, 2) by a power of two,
+ * with its inverse length and norm. False when d is zero or not finite.
+ */
+inline bool SetDirection(View& view, const double d[3])
+{
+  view.Eye = false;
+  std::copy(d, d + 3, view.Vector);
+  if (!ScaleToUnitRange(view.Vector))
+  {
+    return false;
+  }
+  const double* v = view.Vector;
+  view.InverseLength = 1.0 / std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  const DD dd[3] = { { v[0], 0.0 }, { v[1], 0.0 }, { v[2], 0.0 } };
+  view.Norm = NormInWindow(dd, view.NormInverse);
   return true;
 }
 
@@ -162,7 +186,7 @@ PHONGVTK_INLINE double Dot(const double v[3], const double w[3])
  * the bound does not certify a faithful result.
  */
 inline bool CertifiedVisibleArea(const DD v[3], const double vErr[3], const DD w[3],
-  const double wErr[3], const bool wZero[3], double& area)
+  const double wErr[3], const bool wZero[3], double& area, const View* direction = nullptr)
 {
   bool exactZero = true;
   for (int c = 0; c < 3; ++c)
@@ -199,8 +223,9 @@ inline bool CertifiedVisibleArea(const DD v[3], const double vErr[3], const DD w
   {
     return false;
   }
-  double inverse;
-  const DD norm = NormInWindow(v, inverse);
+  // A direction's norm is the same for every polygon (and exact: vErr = 0).
+  double inverse = direction ? direction->NormInverse : 0.0;
+  const DD norm = direction ? direction->Norm : NormInWindow(v, inverse);
   if (!(1.01 * (vErr[0] + vErr[1] + vErr[2]) <= 0x1p-58 * norm.Hi))
   {
     return false;
@@ -297,7 +322,7 @@ VisibleAreaResult ExactVisibleAreaOf(const VertexFn& vertex, std::int64_t n, con
       }
     }
     double area;
-    if (ok && CertifiedVisibleArea(v, vErr, w, wErr, wZero, area))
+    if (ok && CertifiedVisibleArea(v, vErr, w, wErr, wZero, area, view.Eye ? nullptr : &view))
     {
       return { area, StatusOk };
     }
@@ -345,6 +370,199 @@ double VisibleAreaOfVector(
       static_cast<float>(dot) * static_cast<float>(inverseLength), exponent - 1);
   }
   return detail::ScaleSaturated(dot * inverseLength, exponent - 1);
+}
+
+namespace detail
+{
+/// v.w of four lanes, component by component, in the arithmetic of Dot<A> (FAST, DOUBLE,
+/// COMPENSATED): the same operations in the same order, so the same bits as lane by lane.
+template <Accuracy A>
+PHONGVTK_INLINE V4 Dot4(const double v[3], const V4 w[3])
+{
+  if constexpr (A == Accuracy::Fast)
+  {
+    V4f d = {};
+    for (int c = 0; c < 3; ++c)
+    {
+      d += static_cast<float>(v[c]) * __builtin_convertvector(w[c], V4f);
+    }
+    return __builtin_convertvector(d, V4);
+  }
+  else if constexpr (A == Accuracy::Double)
+  {
+    return v[0] * w[0] + v[1] * w[1] + v[2] * w[2];
+  }
+  else
+  {
+    V4 s = {}, err = {};
+    for (int c = 0; c < 3; ++c)
+    {
+      V4 p, e, t, f;
+      TwoProduct(V4{} + v[c], w[c], p, e);
+      TwoSum(s, p, t, f);
+      s = t;
+      err += e + f;
+    }
+    return s + err;
+  }
+}
+} // namespace detail
+
+namespace detail
+{
+/// Add(DD, DD) lane by lane: the same operations.
+PHONGVTK_INLINE void Add4(V4& hi, V4& lo, V4 bHi, V4 bLo)
+{
+  V4 s, e, t, f;
+  TwoSum(hi, bHi, s, e);
+  TwoSum(lo, bLo, t, f);
+  e += t;
+  V4 s2 = s + e;
+  e = e - (s2 - s);
+  e += f;
+  hi = s2 + e;
+  lo = e - (hi - s2);
+}
+
+/**
+ * ExactVisibleAreaOf's certified stage for a direction, four triangles at once: the conditions
+ * for entering it (no tiny difference, no overflow risk, not every component zero), then
+ * CertifiedVisibleArea with v exact, its `continue` for zero components as a lane mask. Returns
+ * the lanes that certify; their areas are bit for bit the per-polygon kernel's.
+ */
+PHONGVTK_INLINE int CertifiedVisibleAreas4(
+  const View& view, const CertifiedLanes& w, double area[4])
+{
+  V4i ok = ~w.Tiny, allZero = ~V4i{}, exactZero = ~V4i{};
+  V4i wZero[3];
+  V4 wErr[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    ok &= w.Permanent[c] <= 0x1p900;
+    wZero[c] = w.Permanent[c] == 0.0;
+    wErr[c] = wZero[c] ? V4{} : w.Bound[c];
+    allZero &= wZero[c];
+    exactZero &= wZero[c] | (view.Vector[c] == 0.0 ? ~V4i{} : V4i{});
+  }
+  V4 dHi = {}, dLo = {}, cross = {}, magnitude = {}, err = {};
+  const V4 zero = {};
+  for (int c = 0; c < 3; ++c)
+  {
+    const V4 v = V4{} + view.Vector[c];
+    V4 p, e, hi = dHi, lo = dLo;
+    TwoProduct(v, w.Hi[c], p, e);
+    Add4(hi, lo, p, e);
+    dHi = wZero[c] ? dHi : hi;
+    dLo = wZero[c] ? dLo : lo;
+    const V4 crossNext = cross + (v * w.Lo[c] + zero * w.Hi[c]);
+    cross = wZero[c] ? cross : crossNext;
+    const V4 av = Abs(v) + Abs(zero);
+    const V4 aw = Abs(w.Hi[c]) + Abs(w.Lo[c]);
+    const V4 magnitudeNext = magnitude + av * aw;
+    magnitude = wZero[c] ? magnitude : magnitudeNext;
+    const V4 errNext = err + (av * wErr[c] + aw * zero + zero * wErr[c]);
+    err = wZero[c] ? err : errNext;
+  }
+  Add4(dHi, dLo, cross, V4{});
+  err = 1.01 * (err + 0x1p-100 * magnitude) + 0x1p-1060;
+  const V4i certified = err <= 0x1p-56 * Abs(dHi);
+  // DivideDD by the direction's norm.
+  const V4 q1 = dHi * view.NormInverse;
+  const V4 rem = Fma(-q1, V4{} + view.Norm.Hi, dHi) + (dLo - q1 * view.Norm.Lo);
+  const V4 quotient = 0.5 * (q1 + rem * view.NormInverse);
+  for (int j = 0; j < 4; ++j)
+  {
+    area[j] = exactZero[j] ? 0.0 : quotient[j];
+  }
+  return LaneBits(ok & ~allZero & (exactZero | certified));
+}
+} // namespace detail
+
+/**
+ * Visible areas of four triangles seen along the view's direction, one per lane, in mode A;
+ * `corner[v][j]` points at vertex v of triangle j. Returns the lanes (bit j: triangle j) whose
+ * `area[j]` is bit for bit what ComputeVisibleArea gives with status Ok: FAST, DOUBLE and
+ * COMPENSATED where the per-polygon kernel leaves the area vector in its safe window at exponent
+ * 0; EXACT where the area vector and then the visible area certify (the same certified stage on
+ * the same double-doubles and bounds). The other lanes are left to the per-polygon kernel.
+ */
+template <Accuracy A, class T>
+PHONGVTK_INLINE int VisibleAreas4(const T* const corner[3][4], const View& view, double area[4])
+{
+  using namespace detail;
+  V4 w[3];
+  int done;
+  if constexpr (A == Accuracy::Exact)
+  {
+    CertifiedLanes c;
+    CertifiedAreaVectors4<T>(corner, c);
+    return CertifiedVisibleAreas4(view, c, area);
+  }
+  else if constexpr (A == Accuracy::Double)
+  {
+    DoubleAreaVectors4<T>(corner, w);
+    done = InWindow(w, 0x1p-500, 0x1p500);
+  }
+  else
+  {
+    TriangleLanes lanes;
+    ComputeTriangles4<A, T>(corner, lanes);
+    for (int c = 0; c < 3; ++c)
+    {
+      w[c] = lanes.Vector[c];
+    }
+    done = lanes.Done;
+  }
+  const V4 dot = Dot4<A>(view.Vector, w);
+  for (int j = 0; j < 4; ++j)
+  {
+    // VisibleAreaOfVector at exponent 0; in the window the product cannot overflow.
+    if constexpr (A == Accuracy::Fast)
+    {
+      area[j] = 0.5 *
+        static_cast<double>(static_cast<float>(dot[j]) * static_cast<float>(view.InverseLength));
+    }
+    else
+    {
+      area[j] = 0.5 * (dot[j] * view.InverseLength);
+    }
+  }
+  return done;
+}
+
+/**
+ * The sum of the positive values of a[0, n) as a double-double: four interleaved compensated
+ * sums (TwoSum, the errors added in double; every term has the same sign, so nothing cancels
+ * and the error is about n u^2 of the sum), added in double-double in lane order.
+ */
+inline detail::DD PositiveSum(const double* a, std::int64_t n)
+{
+  using namespace detail;
+  V4 s = {}, err = {};
+  std::int64_t i = 0;
+  for (; i + 4 <= n; i += 4)
+  {
+    V4 x;
+    std::memcpy(&x, a + i, sizeof(x));
+    x = x > 0.0 ? x : V4{};
+    V4 t, e;
+    TwoSum(s, x, t, e);
+    s = t;
+    err += e;
+  }
+  DD sum = { 0.0, 0.0 };
+  for (int j = 0; j < 4; ++j)
+  {
+    sum = Add(sum, DD{ s[j], err[j] });
+  }
+  for (; i < n; ++i)
+  {
+    if (a[i] > 0.0)
+    {
+      sum = Add(sum, DD{ a[i], 0.0 });
+    }
+  }
+  return sum;
 }
 
 /**

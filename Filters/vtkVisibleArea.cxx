@@ -82,41 +82,69 @@ struct CellPass
         [&](vtkIdType b, vtkIdType e)
         {
           CellCounts& counts = this->Counts->Local();
+          // Runs of triangles seen along a direction go four at a time, one per SIMD lane; a
+          // triangle outside the common case takes the per-polygon path.
+          const bool lanes = !strips && !this->InputAreaVectors && !this->TheView.Eye;
           for (vtkIdType cell = b; cell < e; ++cell)
           {
-            const Conn* ids = conn + offsets[cell];
-            const std::int64_t m = offsets[cell + 1] - offsets[cell];
-            const vtkIdType out = first + cell;
-            if (!ValidIds(ids, m, this->NumberOfPoints))
+            if (lanes && cell + 4 <= e && phongvtk::AreFourTriangles(offsets, cell) &&
+              ValidIds(conn + offsets[cell], 12, this->NumberOfPoints))
             {
-              counts.BadCell(out);
+              const T* corner[3][4];
+              phongvtk::TriangleCorners(this->Points, offsets, conn, cell, corner);
+              double area[4];
+              const int done = phongvtk::VisibleAreas4<A, T>(corner, this->TheView, area);
+              for (int j = 0; j < 4; ++j)
+              {
+                if (done & (1 << j))
+                {
+                  this->Areas[first + cell + j] = area[j];
+                  this->Status[first + cell + j] = phongvtk::StatusOk;
+                }
+                else
+                {
+                  this->Polygon(offsets, conn, cell + j, first + cell + j, false, counts);
+                }
+              }
+              cell += 3;
               continue;
             }
-            const T* pts = this->Points;
-            VisibleAreaResult r;
-            if (strips)
-            {
-              r = this->Cell(
-                [pts, ids, m](std::int64_t i) {
-                  return pts +
-                    3 * static_cast<std::int64_t>(ids[phongvtk::StripOutlineIndex(i, m)]);
-                },
-                m, out);
-            }
-            else
-            {
-              r = this->Cell([pts, ids](std::int64_t i)
-                { return pts + 3 * static_cast<std::int64_t>(ids[i]); },
-                m, out);
-            }
-            this->Areas[out] = r.Area;
-            this->Status[out] = r.Status;
-            counts.NonFinite += (r.Status == phongvtk::StatusNonFinite);
+            this->Polygon(offsets, conn, cell, first + cell, strips, counts);
           }
         });
       this->Filter->UpdateProgress(progressBegin +
         (progressEnd - progressBegin) * static_cast<double>(end) / static_cast<double>(n));
     }
+  }
+
+  /// One polygon or strip by the per-polygon kernels.
+  template <class Off, class Conn>
+  void Polygon(const Off* offsets, const Conn* conn, vtkIdType cell, vtkIdType out, bool strips,
+    CellCounts& counts) const
+  {
+    const Conn* ids = conn + offsets[cell];
+    const std::int64_t m = offsets[cell + 1] - offsets[cell];
+    if (!ValidIds(ids, m, this->NumberOfPoints))
+    {
+      counts.BadCell(out);
+      return;
+    }
+    const T* pts = this->Points;
+    VisibleAreaResult r;
+    if (strips)
+    {
+      r = this->Cell([pts, ids, m](std::int64_t i)
+        { return pts + 3 * static_cast<std::int64_t>(ids[phongvtk::StripOutlineIndex(i, m)]); },
+        m, out);
+    }
+    else
+    {
+      r = this->Cell(
+        [pts, ids](std::int64_t i) { return pts + 3 * static_cast<std::int64_t>(ids[i]); }, m, out);
+    }
+    this->Areas[out] = r.Area;
+    this->Status[out] = r.Status;
+    counts.NonFinite += (r.Status == phongvtk::StatusNonFinite);
   }
 
   template <class VertexFn>
@@ -277,9 +305,10 @@ bool Execute(vtkVisibleArea* self, vtkPolyData* input, const T* points, const Vi
   vtkIdType& firstBadCell, DD sumW[3], int& sumScale)
 {
   const vtkIdType numCells = input->GetNumberOfCells();
+  // The pass over the surfaces writes every surface cell's area and status.
   std::vector<unsigned char> status(
     static_cast<std::size_t>(numCells), static_cast<unsigned char>(phongvtk::StatusNotSurface));
-  std::fill_n(areas->GetPointer(0), numCells, 0.0);
+  std::fill_n(areas->GetPointer(0), input->GetNumberOfVerts() + input->GetNumberOfLines(), 0.0);
   vtkSMPThreadLocal<CellCounts> counts;
   CheckNonSurfaces(input, counts.Local());
   CellPass<Accuracy::Double, T> pass{ self, points, input->GetNumberOfPoints(), view,
@@ -331,40 +360,43 @@ int vtkVisibleArea::RequestData(vtkInformation* vtkNotUsed(request),
 
   // The view.
   View view;
+  double v[3];
   if (this->Camera)
   {
     if (this->Camera->GetParallelProjection())
     {
       const double* dop = this->Camera->GetDirectionOfProjection();
-      std::copy(dop, dop + 3, view.Vector);
-      for (double& x : view.Vector)
+      for (int c = 0; c < 3; ++c)
       {
-        x = -x;
+        v[c] = -dop[c];
       }
     }
     else
     {
       view.Eye = true;
-      this->Camera->GetPosition(view.Vector);
+      this->Camera->GetPosition(v);
     }
   }
   else
   {
-    std::copy(this->ViewDirection, this->ViewDirection + 3, view.Vector);
+    std::copy(this->ViewDirection, this->ViewDirection + 3, v);
   }
-  const double* v = view.Vector;
-  const bool finite = std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
-  if (!finite || (!view.Eye && !phongvtk::detail::ScaleToUnitRange(view.Vector)))
+  bool usable = std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+  if (usable && view.Eye)
+  {
+    std::copy(v, v + 3, view.Vector);
+  }
+  else if (usable)
+  {
+    usable = phongvtk::detail::SetDirection(view, v);
+  }
+  if (!usable)
   {
     vtkErrorMacro("The " << (view.Eye ? "camera position" : "view direction") << " (" << v[0]
                          << ", " << v[1] << ", " << v[2]
                          << ") is not a finite non-zero vector; the output is empty.");
     output->Initialize();
     return 1;
-  }
-  if (!view.Eye)
-  {
-    view.InverseLength = 1.0 / std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
   }
 
   const vtkIdType numCells = input->GetNumberOfCells();
@@ -427,15 +459,25 @@ int vtkVisibleArea::RequestData(vtkInformation* vtkNotUsed(request),
                        "their visible area is 0.");
   }
 
-  // The front faces' total, in double-double (deterministic: cell order).
-  DD total = { 0.0, 0.0 };
+  // The front faces' total: double-double sums of fixed chunks of cells, added in chunk order
+  // (the same bits for any number of threads).
+  constexpr vtkIdType chunk = 65536;
+  const vtkIdType numChunks = (numCells + chunk - 1) / chunk;
+  std::vector<DD> partial(static_cast<std::size_t>(numChunks));
   const double* a = areas->GetPointer(0);
-  for (vtkIdType cell = 0; cell < numCells; ++cell)
-  {
-    if (a[cell] > 0.0)
+  phongvtk::For(0, numChunks, numCells / 8,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      total = phongvtk::detail::Add(total, DD{ a[cell], 0.0 });
-    }
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        partial[static_cast<std::size_t>(k)] =
+          phongvtk::PositiveSum(a + k * chunk, std::min(chunk, numCells - k * chunk));
+      }
+    });
+  DD total = { 0.0, 0.0 };
+  for (const DD& p : partial)
+  {
+    total = phongvtk::detail::Add(total, p);
   }
   this->TotalVisibleArea = total.Hi + total.Lo;
 

@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <iostream>
 #include <limits>
 #include <random>
@@ -761,6 +762,70 @@ TEST(VisibleAreaIdentities, OpenSurfacesLookLargestAlongTheirSummedAreaVector)
   EXPECT_TRUE(disc.IsFaithful(run.MaxArea)) << run.MaxArea << " vs " << disc.Value();
   EXPECT_EQ(run.MaxDirection[2], 1.0);
   EXPECT_NEAR(run.MaxDirection[0], 0.0, 1e-15);
+}
+
+TEST(VisibleAreaIdentities, ATrianglesAreaDoesNotDependOnItsNeighbours)
+{
+  // Runs of triangles go four at a time; a triangle next to a quad goes alone. Either way (and so
+  // for any order of the cells or split into pieces) a triangle's visible area is the same bits:
+  // random triangles over 80 binades, nearly and exactly edge-on, with zero components, tiny and
+  // huge coordinates, each once in a run of triangles and once between two quads.
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> binade(-40, 40);
+  std::vector<Point> points;
+  std::vector<Cell> triangles;
+  for (int k = 0; k < 4000; ++k)
+  {
+    const double scale = std::ldexp(1.0, binade(rng)) * (k % 97 == 0 ? 1e280 : 1.0);
+    const double offset = k % 5 == 0 ? 1e6 * scale : 0.0;
+    const vtkIdType first = static_cast<vtkIdType>(points.size());
+    for (int v = 0; v < 3; ++v)
+    {
+      Point p = { { offset + scale * unit(rng), offset + scale * unit(rng),
+        offset + scale * unit(rng) } };
+      if (k % 7 == 0)
+      {
+        p[2] = offset; // in the plane z = offset: edge-on along x or y, zero x and y components
+      }
+      if (k % 11 == 0 && v == 2)
+      {
+        p = points[first]; // degenerate
+      }
+      points.push_back(p);
+    }
+    triangles.push_back({ first, first + 1, first + 2 });
+  }
+  const vtkIdType quad[4] = { 0, 1, 2, 3 };
+  Cells runs, alone;
+  runs.Polys = triangles;
+  for (const Cell& t : triangles)
+  {
+    alone.Polys.push_back({ quad[0], quad[1], quad[2], quad[3] });
+    alone.Polys.push_back(t);
+  }
+  auto inRuns = MakePolyData(points, runs);
+  auto betweenQuads = MakePolyData(points, alone);
+  for (const Point& direction :
+    { Point{ { 1.0, 0.0, 0.0 } }, Point{ { 0.0, 0.0, 1.0 } }, RandomDirection(rng) })
+  {
+    for (int mode : Modes)
+    {
+      FilterRun a = RunFilter(inRuns, mode, direction);
+      FilterRun b = RunFilter(betweenQuads, mode, direction);
+      int mismatches = 0;
+      for (vtkIdType t = 0; t < static_cast<vtkIdType>(triangles.size()); ++t)
+      {
+        const double x = a.Area(t), y = b.Area(2 * t + 1);
+        if (std::memcmp(&x, &y, sizeof(x)) != 0 && ++mismatches <= 5)
+        {
+          ADD_FAILURE() << "mode " << mode << " triangle " << t << ": " << x << " in a run, " << y
+                        << " alone";
+        }
+      }
+      EXPECT_EQ(mismatches, 0) << "mode " << mode;
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
