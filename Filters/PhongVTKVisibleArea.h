@@ -377,14 +377,14 @@ namespace detail
 /// v.w of four lanes, component by component, in the arithmetic of Dot<A> (FAST, DOUBLE,
 /// COMPENSATED): the same operations in the same order, so the same bits as lane by lane.
 template <Accuracy A>
-PHONGVTK_INLINE V4 Dot4(const double v[3], const V4 w[3])
+PHONGVTK_INLINE V4 Dot4(const V4 v[3], const V4 w[3])
 {
   if constexpr (A == Accuracy::Fast)
   {
     V4f d = {};
     for (int c = 0; c < 3; ++c)
     {
-      d += static_cast<float>(v[c]) * __builtin_convertvector(w[c], V4f);
+      d += __builtin_convertvector(v[c], V4f) * __builtin_convertvector(w[c], V4f);
     }
     return __builtin_convertvector(d, V4);
   }
@@ -398,7 +398,7 @@ PHONGVTK_INLINE V4 Dot4(const double v[3], const V4 w[3])
     for (int c = 0; c < 3; ++c)
     {
       V4 p, e, t, f;
-      TwoProduct(V4{} + v[c], w[c], p, e);
+      TwoProduct(v[c], w[c], p, e);
       TwoSum(s, p, t, f);
       s = t;
       err += e + f;
@@ -406,10 +406,52 @@ PHONGVTK_INLINE V4 Dot4(const double v[3], const V4 w[3])
     return s + err;
   }
 }
-} // namespace detail
 
-namespace detail
+/**
+ * EyeVector for four triangles (n = 3): S = sum_i (E - p_i) in the arithmetic of mode A, scaled
+ * into [1, 2) by a power of two, and 1 / |S|. Returns the lanes whose S lies within 2^+-1000
+ * before scaling: there EyeVector's first (unscaled) try succeeds, with the same bits.
+ */
+template <Accuracy A, class T>
+PHONGVTK_INLINE int EyeVectors4(
+  const T* const corner[3][4], const double eye[3], V4 s[3], V4& inverseLength)
 {
+  for (int c = 0; c < 3; ++c)
+  {
+    V4 sum = {}, err = {};
+    for (int v = 0; v < 3; ++v)
+    {
+      const V4 d = eye[c] * 1.0 - GatherAxis<V4>(corner[v], c) * 1.0;
+      if constexpr (A == Accuracy::Compensated)
+      {
+        V4 t, e;
+        TwoSum(sum, d, t, e);
+        sum = t;
+        err += e;
+      }
+      else
+      {
+        sum += d;
+      }
+    }
+    s[c] = sum + err;
+  }
+  const V4 m0 = Abs(s[0]), m1 = Abs(s[1]), m2 = Abs(s[2]);
+  V4 m = m0 > m1 ? m0 : m1;
+  m = m > m2 ? m : m2;
+  const V4i inRange = (m >= 0x1p-1000) & (m <= 0x1p1000);
+  // Scale2(s_c, -k) with k = Exponent2(m): times the power of two whose biased exponent is 2046
+  // minus m's (in range both are normal, and 1 <= m 2^-k < 2).
+  const V4i biased = (reinterpret_cast<V4i>(m) >> 52) & 0x7ff;
+  const V4 scale = reinterpret_cast<V4>((2046 - biased) << 52);
+  for (int c = 0; c < 3; ++c)
+  {
+    s[c] = inRange ? s[c] * scale : s[c];
+  }
+  inverseLength = 1.0 / Sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+  return LaneBits(inRange);
+}
+
 /// Add(DD, DD) lane by lane: the same operations.
 PHONGVTK_INLINE void Add4(V4& hi, V4& lo, V4 bHi, V4 bLo)
 {
@@ -479,7 +521,7 @@ PHONGVTK_INLINE int CertifiedVisibleAreas4(
 } // namespace detail
 
 /**
- * Visible areas of four triangles seen along the view's direction, one per lane, in mode A;
+ * Visible areas of four triangles, one per lane, in mode A (EXACT: along a direction only);
  * `corner[v][j]` points at vertex v of triangle j. Returns the lanes (bit j: triangle j) whose
  * `area[j]` is bit for bit what ComputeVisibleArea gives with status Ok: FAST, DOUBLE and
  * COMPENSATED where the per-polygon kernel leaves the area vector in its safe window at exponent
@@ -494,6 +536,10 @@ PHONGVTK_INLINE int VisibleAreas4(const T* const corner[3][4], const View& view,
   int done;
   if constexpr (A == Accuracy::Exact)
   {
+    if (view.Eye)
+    {
+      return 0; // the per-polygon kernel's double-double eye vector
+    }
     CertifiedLanes c;
     CertifiedAreaVectors4<T>(corner, c);
     return CertifiedVisibleAreas4(view, c, area);
@@ -513,18 +559,31 @@ PHONGVTK_INLINE int VisibleAreas4(const T* const corner[3][4], const View& view,
     }
     done = lanes.Done;
   }
-  const V4 dot = Dot4<A>(view.Vector, w);
+  V4 v[3], inverseLength;
+  if (view.Eye)
+  {
+    done &= EyeVectors4<A, T>(corner, view.Vector, v, inverseLength);
+  }
+  else
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      v[c] = V4{} + view.Vector[c];
+    }
+    inverseLength = V4{} + view.InverseLength;
+  }
+  const V4 dot = Dot4<A>(v, w);
   for (int j = 0; j < 4; ++j)
   {
     // VisibleAreaOfVector at exponent 0; in the window the product cannot overflow.
     if constexpr (A == Accuracy::Fast)
     {
       area[j] = 0.5 *
-        static_cast<double>(static_cast<float>(dot[j]) * static_cast<float>(view.InverseLength));
+        static_cast<double>(static_cast<float>(dot[j]) * static_cast<float>(inverseLength[j]));
     }
     else
     {
-      area[j] = 0.5 * (dot[j] * view.InverseLength);
+      area[j] = 0.5 * (dot[j] * inverseLength[j]);
     }
   }
   return done;

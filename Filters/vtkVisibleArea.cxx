@@ -82,9 +82,10 @@ struct CellPass
         [&](vtkIdType b, vtkIdType e)
         {
           CellCounts& counts = this->Counts->Local();
-          // Runs of triangles seen along a direction go four at a time, one per SIMD lane; a
-          // triangle outside the common case takes the per-polygon path.
-          const bool lanes = !strips && !this->InputAreaVectors && !this->TheView.Eye;
+          // Runs of triangles go four at a time, one per SIMD lane; a triangle outside the
+          // common case takes the per-polygon path.
+          const bool lanes =
+            !strips && !this->InputAreaVectors && !(A == Accuracy::Exact && this->TheView.Eye);
           for (vtkIdType cell = b; cell < e; ++cell)
           {
             if (lanes && cell + 4 <= e && phongvtk::AreFourTriangles(offsets, cell) &&

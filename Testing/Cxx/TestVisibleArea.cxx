@@ -806,24 +806,28 @@ TEST(VisibleAreaIdentities, ATrianglesAreaDoesNotDependOnItsNeighbours)
   }
   auto inRuns = MakePolyData(points, runs);
   auto betweenQuads = MakePolyData(points, alone);
-  for (const Point& direction :
-    { Point{ { 1.0, 0.0, 0.0 } }, Point{ { 0.0, 0.0, 1.0 } }, RandomDirection(rng) })
+  vtkNew<vtkCamera> camera; // perspective: the direction to the eye from every triangle
+  camera->SetPosition(3.0, -2.0, 5.0);
+  const std::vector<Point> views = { { { 1.0, 0.0, 0.0 } }, { { 0.0, 0.0, 1.0 } },
+    RandomDirection(rng), { { 0.0, 0.0, 0.0 } } };
+  for (std::size_t view = 0; view < views.size(); ++view)
   {
+    vtkCamera* eye = view + 1 == views.size() ? camera.Get() : nullptr;
     for (int mode : Modes)
     {
-      FilterRun a = RunFilter(inRuns, mode, direction);
-      FilterRun b = RunFilter(betweenQuads, mode, direction);
+      FilterRun a = RunFilter(inRuns, mode, views[view], eye);
+      FilterRun b = RunFilter(betweenQuads, mode, views[view], eye);
       int mismatches = 0;
       for (vtkIdType t = 0; t < static_cast<vtkIdType>(triangles.size()); ++t)
       {
         const double x = a.Area(t), y = b.Area(2 * t + 1);
         if (std::memcmp(&x, &y, sizeof(x)) != 0 && ++mismatches <= 5)
         {
-          ADD_FAILURE() << "mode " << mode << " triangle " << t << ": " << x << " in a run, " << y
-                        << " alone";
+          ADD_FAILURE() << "view " << view << " mode " << mode << " triangle " << t << ": " << x
+                        << " in a run, " << y << " alone";
         }
       }
-      EXPECT_EQ(mismatches, 0) << "mode " << mode;
+      EXPECT_EQ(mismatches, 0) << "view " << view << " mode " << mode;
     }
   }
 }
