@@ -64,11 +64,21 @@ inline int ScaledEdge(const T* q, const T* v, double e[3])
   return k + extra;
 }
 
+/// What a pass of the point pass does with a contribution: add it to the cell-order sum, or
+/// count it (first pass of the piece-invariant sums) or deposit it (second pass).
+enum class SumPass
+{
+  CellOrder,
+  Count,
+  Deposit
+};
+
 /**
  * The points [First, First + Count) whose normals one task of the point pass computes. A face
  * adds its contribution to the corners inside the range only: to their sums, in cell order, or,
- * piece-invariant, to sums that do not depend on the order (InvariantSums).
+ * piece-invariant, to sums that do not depend on the order (InvariantSums, in two passes).
  */
+template <SumPass P>
 struct PointRange
 {
   vtkIdType First = 0;
@@ -84,12 +94,38 @@ struct PointRange
 
   PHONGVTK_INLINE void Add(vtkIdType id, const double v[3], int e) const
   {
-    if (this->Sums)
+    const auto i = static_cast<std::int32_t>(id - this->First);
+    if constexpr (P == SumPass::CellOrder)
     {
       this->Sums[id - this->First].Add(v, e);
-      return;
     }
-    this->Invariant->Add(static_cast<std::int32_t>(id - this->First), v, e);
+    else if constexpr (P == SumPass::Count)
+    {
+      this->Invariant->Count(i, v, e);
+    }
+    else
+    {
+      this->Invariant->Deposit(i, v, e);
+    }
+  }
+
+  /// Add() of a face (v0, v1, v2, 0) of exponent 0 whose InvariantSums::TopOf is `top` (used by
+  /// the count only).
+  PHONGVTK_INLINE void AddFace(vtkIdType id, const detail::V4& v, int top) const
+  {
+    const auto i = static_cast<std::int32_t>(id - this->First);
+    if constexpr (P == SumPass::CellOrder)
+    {
+      this->Sums[id - this->First].Add(v);
+    }
+    else if constexpr (P == SumPass::Count)
+    {
+      this->Invariant->Count(i, top);
+    }
+    else
+    {
+      this->Invariant->Deposit(i, v, 0);
+    }
   }
 };
 
@@ -98,9 +134,9 @@ struct PointRange
  * gives the face's i-th point id; the face is the area vector `r.Vector * 2^r.Exponent` for AREA
  * weighting, the unit normal otherwise. Faces without a normal contribute nothing.
  */
-template <class T, class VertexIdFn>
+template <class T, class VertexIdFn, class Range>
 void ScatterFace(int weighting, const T* pts, const VertexIdFn& vertexId, std::int64_t n,
-  const AreaVector& r, const PointRange& range)
+  const AreaVector& r, const Range& range)
 {
   if (r.Status != phongvtk::StatusOk)
   {
@@ -183,18 +219,19 @@ void WriteNormal(const double s[3], O* normal)
  * among processes.
  */
 template <class O>
-void NormalizeSums(const PointRange& range, O* normals)
+void NormalizeSums(vtkIdType first, vtkIdType count, const ScaledSum* sums,
+  const InvariantSums* invariant, O* normals)
 {
-  if (range.Sums)
+  if (!invariant)
   {
-    for (vtkIdType i = 0; i < range.Count; ++i)
+    for (vtkIdType i = 0; i < count; ++i)
     {
-      WriteNormal(range.Sums[i].S, normals + 3 * (range.First + i));
+      WriteNormal(sums[i].S, normals + 3 * (first + i));
     }
     return;
   }
-  range.Invariant->Finish([&](std::int32_t i, const double sum[3], int)
-    { WriteNormal(sum, normals + 3 * (range.First + i)); });
+  invariant->Finish(
+    [&](std::int32_t i, const double sum[3], int) { WriteNormal(sum, normals + 3 * (first + i)); });
 }
 
 /**
@@ -255,7 +292,7 @@ struct PointNormalPass
    * split into ranges, one task each; a task visits every block of polygons that uses one of its
    * points, recomputes those faces and adds their contributions to its own points only: in cell
    * order, or, piece-invariant, into sums that do not depend on the order (InvariantSums, which
-   * keeps the range's contributions for a second pass). A point's normal is therefore the same
+   * takes the range's faces twice). A point's normal is therefore the same
    * however the points are split (and, piece-invariant, however the cells are ordered or the mesh
    * is partitioned among processes). Blocks record the span of point ids they use, so on a
    * coherent mesh a task visits only the blocks around its range; on an incoherent one the
@@ -267,7 +304,6 @@ struct PointNormalPass
     this->ComputeSpans();
     vtkCellArray* polys = this->Polys;
     const vtkIdType numPolys = polys ? polys->GetNumberOfCells() : 0;
-    const vtkIdType numBlocks = (numPolys + PolyBlock - 1) / PolyBlock;
     const std::vector<IdSpan>& spans = this->Spans;
     const vtkIdType rangeSize = this->RangeSize(spans, numPolys);
     const vtkIdType numRanges = (this->NumberOfPoints + rangeSize - 1) / rangeSize;
@@ -279,7 +315,6 @@ struct PointNormalPass
       InvariantSums Invariant;
     };
     vtkSMPThreadLocal<Buffers> localBuffers;
-    vtkCellArray* strips = this->Strips;
     phongvtk::For(
       0, numRanges, numPolys,
       [&](vtkIdType begin, vtkIdType end)
@@ -287,44 +322,59 @@ struct PointNormalPass
         Buffers& buffers = localBuffers.Local();
         for (vtkIdType r = begin; r < end && !this->Filter->GetAbortExecute(); ++r)
         {
-          PointRange range;
-          range.First = r * rangeSize;
-          range.Count = std::min(rangeSize, this->NumberOfPoints - range.First);
+          const vtkIdType first = r * rangeSize;
+          const vtkIdType count = std::min(rangeSize, this->NumberOfPoints - first);
           if (this->PieceInvariant)
           {
-            buffers.Invariant.Reset(static_cast<std::size_t>(range.Count));
-            range.Invariant = &buffers.Invariant;
+            // Two passes over the range's faces (InvariantSums).
+            buffers.Invariant.Reset(static_cast<std::size_t>(count));
+            this->ScatterRange<A>(
+              PointRange<SumPass::Count>{ first, count, nullptr, &buffers.Invariant });
+            buffers.Invariant.StartDeposits();
+            this->ScatterRange<A>(
+              PointRange<SumPass::Deposit>{ first, count, nullptr, &buffers.Invariant });
+            NormalizeSums(first, count, nullptr, &buffers.Invariant, pointNormals);
           }
           else
           {
-            buffers.Sums.assign(static_cast<std::size_t>(range.Count), ScaledSum());
-            range.Sums = buffers.Sums.data();
+            buffers.Sums.assign(static_cast<std::size_t>(count), ScaledSum());
+            this->ScatterRange<A>(
+              PointRange<SumPass::CellOrder>{ first, count, buffers.Sums.data(), nullptr });
+            NormalizeSums(first, count, buffers.Sums.data(), nullptr, pointNormals);
           }
-          if (numPolys > 0)
-          {
-            polys->Visit(RawCells{},
-              [&](const auto* offsets, const auto* conn)
-              {
-                for (vtkIdType b = 0; b < numBlocks; ++b)
-                {
-                  if (spans[b].Reaches(range.First, range.Count))
-                  {
-                    // A block inside the range needs no test of its corners.
-                    const bool inside = spans[b].Inside(range.First, range.Count);
-                    this->ScatterPolygons<A>(offsets, conn, b * PolyBlock,
-                      std::min(numPolys, (b + 1) * PolyBlock), range, inside);
-                  }
-                }
-              });
-          }
-          if (strips && strips->GetNumberOfCells() > 0)
-          {
-            this->ScatterStrips<A>(strips, range);
-          }
-          NormalizeSums(range, pointNormals);
         }
       },
       1);
+  }
+
+  /// Every face that has a corner in the range adds its contributions there.
+  template <Accuracy A, class Range>
+  void ScatterRange(const Range& range) const
+  {
+    vtkCellArray* polys = this->Polys;
+    const vtkIdType numPolys = polys ? polys->GetNumberOfCells() : 0;
+    if (numPolys > 0)
+    {
+      const std::vector<IdSpan>& spans = this->Spans;
+      polys->Visit(RawCells{},
+        [&](const auto* offsets, const auto* conn)
+        {
+          for (std::size_t b = 0; b < spans.size(); ++b)
+          {
+            if (spans[b].Reaches(range.First, range.Count))
+            {
+              // A block inside the range needs no test of its corners.
+              const vtkIdType begin = static_cast<vtkIdType>(b) * PolyBlock;
+              this->ScatterPolygons<A>(offsets, conn, begin, std::min(numPolys, begin + PolyBlock),
+                range, spans[b].Inside(range.First, range.Count));
+            }
+          }
+        });
+    }
+    if (this->Strips && this->Strips->GetNumberOfCells() > 0)
+    {
+      this->ScatterStrips<A>(this->Strips, range);
+    }
   }
 
   /// The smallest and largest point id of every block of PolyBlock polygons (once).
@@ -346,9 +396,9 @@ struct PointNormalPass
   }
 
   /// Adds the faces of polygons [begin, end) to a range's sums, triangles four at a time.
-  template <Accuracy A, class Off, class Conn>
+  template <Accuracy A, class Off, class Conn, class Range>
   void ScatterPolygons(const Off* offsets, const Conn* conn, vtkIdType begin, vtkIdType end,
-    const PointRange& range, bool inside) const
+    const Range& range, bool inside) const
   {
     const T* pts = this->Points;
     const int weighting = this->Weighting;
@@ -371,26 +421,18 @@ struct PointNormalPass
             if (done & (1 << j))
             {
               const detail::V4 face = { w[0][j], w[1][j], w[2][j], 0.0 };
-              if (range.Sums)
+              int top = 0;
+              if constexpr (std::is_same<Range, PointRange<SumPass::Count>>::value)
               {
-                for (int i = 0; i < 3; ++i)
-                {
-                  const vtkIdType id = static_cast<vtkIdType>(ids[i]);
-                  if (inside || range.Contains(id))
-                  {
-                    range.Sums[id - range.First].Add(face);
-                  }
-                }
-                continue;
+                const double v[3] = { face[0], face[1], face[2] };
+                top = InvariantSums::TopOf(v, 0);
               }
-              const double v[3] = { face[0], face[1], face[2] };
-              const int top = InvariantSums::TopOf(v, 0);
               for (int i = 0; i < 3; ++i)
               {
                 const vtkIdType id = static_cast<vtkIdType>(ids[i]);
                 if (inside || range.Contains(id))
                 {
-                  range.Invariant->Add(static_cast<std::int32_t>(id - range.First), v, 0, top);
+                  range.AddFace(id, face, top);
                 }
               }
               continue;
@@ -447,8 +489,8 @@ struct PointNormalPass
   }
 
   /// A strip contributes triangle by triangle, each with the strip's alternating orientation.
-  template <Accuracy A>
-  void ScatterStrips(vtkCellArray* strips, const PointRange& range) const
+  template <Accuracy A, class Range>
+  void ScatterStrips(vtkCellArray* strips, const Range& range) const
   {
     const T* pts = this->Points;
     strips->Visit(RawCells{},

@@ -127,97 +127,110 @@ struct ScaledSum
 static_assert(sizeof(ScaledSum) == sizeof(detail::V4), "ScaledSum adds as one register");
 
 /**
- * Order-independent sums of the contributions to a block of points [0, Size). Add() records
- * contributions (finite V); Finish() forms every point's sum. The result of a point depends only
- * on the multiset of (V, E) given to it, bit for bit.
+ * Order-independent sums of the contributions to a block of points [0, Size), in two passes over
+ * the same contributions (in any order each): Count() (after Reset) finds every point's largest
+ * exponent and number of contributions; StartDeposits() fixes each point's grids, and Deposit()
+ * adds every contribution, rounded onto them, into exact sums. Finish() hands out the sums. A
+ * point's result depends only on the multiset of (V, E) given to it, bit for bit. Two passes
+ * instead of keeping the contributions: recomputing a face costs less than storing and reloading
+ * its contributions (measured: 32 bytes a corner written and read again was most of the cost).
  */
 class InvariantSums
 {
 public:
-  /// Forgets every contribution; the points are [0, points).
+  /// Forgets every contribution and starts the first pass; the points are [0, points).
   void Reset(std::size_t points)
   {
     this->Top.assign(points, INT_MIN);
-    this->Count.assign(points, 0);
-    this->Items.clear();
+    this->CountOf.assign(points, 0);
   }
 
   std::size_t Size() const { return this->Top.size(); }
 
-  /// The exponent Add() needs: that of V's largest component plus E (INT_MIN for a zero V).
+  /// The exponent Count() needs: that of V's largest component plus E (INT_MIN for a zero V).
   static PHONGVTK_INLINE int TopOf(const double v[3], int e)
   {
     const double m = detail::MaxAbs3(v);
     return m > 0.0 ? e + detail::Exponent2(m) : INT_MIN;
   }
 
-  /// Records V * 2^E for `point`; a zero vector adds nothing and is not counted.
-  PHONGVTK_INLINE void Add(std::int32_t point, const double v[3], int e)
+  /// First pass: V * 2^E for `point` (finite V); a zero vector is not counted.
+  PHONGVTK_INLINE void Count(std::int32_t point, const double v[3], int e)
   {
-    this->Add(point, v, e, TopOf(v, e));
+    this->Count(point, TopOf(v, e));
   }
 
-  /// Add() with TopOf(v, e) already known (one face, several corners).
-  PHONGVTK_INLINE void Add(std::int32_t point, const double v[3], int e, int top)
+  /// Count() with TopOf(v, e) already known (one face, several corners).
+  PHONGVTK_INLINE void Count(std::int32_t point, int top)
   {
     if (top == INT_MIN)
     {
       return;
     }
-    int& t = this->Top[static_cast<std::size_t>(point)];
-    t = std::max(t, top);
-    ++this->Count[static_cast<std::size_t>(point)];
-    this->Items.push_back(Item{ { v[0], v[1], v[2] }, e, point });
+    const std::size_t p = static_cast<std::size_t>(point);
+    this->Top[p] = std::max(this->Top[p], top);
+    ++this->CountOf[p];
   }
 
-  /**
-   * Every point's sum: `write(point, s, exponent)` with the sum s * 2^exponent (s zero for a
-   * point without contributions).
-   */
-  template <class WriteFn>
-  void Finish(const WriteFn& write)
+  /// Ends the first pass: every point's grids.
+  void StartDeposits()
   {
-    using detail::V4;
     const std::size_t n = this->Size();
     this->Parts.assign(n, Part{});
     this->Grid.resize(n);
     for (std::size_t p = 0; p < n; ++p)
     {
-      this->Grid[p] = GridOf(this->Count[p], this->Count[p] > 0 ? -this->Top[p] - 1 : 0);
+      this->Grid[p] = GridOf(this->CountOf[p], this->CountOf[p] > 0 ? -this->Top[p] - 1 : 0);
     }
-    const detail::V4i firstThree = { -1, -1, -1, 0 };
-    for (const Item& item : this->Items)
+  }
+
+  /// Second pass: the same contribution as given to Count(), rounded onto the point's grids and
+  /// added exactly.
+  PHONGVTK_INLINE void Deposit(std::int32_t point, const double v[3], int e)
+  {
+    this->Deposit(point, detail::V4{ v[0], v[1], v[2], 0.0 }, e);
+  }
+
+  /// Deposit() of (v0, v1, v2, 0).
+  PHONGVTK_INLINE void Deposit(std::int32_t point, const detail::V4& v, int e)
+  {
+    using detail::V4;
+    if (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0)
     {
-      const std::size_t p = static_cast<std::size_t>(item.Point);
-      Part& part = this->Parts[p];
-      const Magic& m = this->Grid[p];
-      // The item's four doubles are V and (E, Point): keep V, zero the fourth lane.
-      V4 raw;
-      std::memcpy(&raw, &item, sizeof raw);
-      V4 x = reinterpret_cast<V4>(reinterpret_cast<detail::V4i>(raw) & firstThree);
-      if (item.E == 0 && m.Scale != 0.0)
-      {
-        x *= m.Scale; // exact: a power of two within the normal range
-      }
-      else
-      {
-        const int k = item.E - this->Top[p] - 1;
-        for (int c = 0; c < 3; ++c)
-        {
-          x[c] = detail::Scale2(item.V[c], k);
-        }
-      }
-      // fl(x + M) - M is x rounded to M's ulp, a function of x alone (ties to even), and exact.
-      const V4 high = (x + m.High) - m.High;
-      const V4 low = ((x - high) + m.Low) - m.Low;
-      part.Hi += high;
-      part.Lo += low;
+      return; // not counted either
     }
-    for (std::size_t p = 0; p < n; ++p)
+    const std::size_t p = static_cast<std::size_t>(point);
+    const Magic& m = this->Grid[p];
+    V4 x;
+    if (e == 0 && m.Scale != 0.0)
     {
-      const V4 sum = this->Parts[p].Hi + this->Parts[p].Lo;
+      x = v * m.Scale; // exact: a power of two within the normal range
+    }
+    else
+    {
+      const int k = e - this->Top[p] - 1;
+      x = V4{ detail::Scale2(v[0], k), detail::Scale2(v[1], k), detail::Scale2(v[2], k), 0.0 };
+    }
+    // fl(x + M) - M is x rounded to M's ulp, a function of x alone (ties to even), and exact.
+    const V4 high = (x + m.High) - m.High;
+    const V4 low = ((x - high) + m.Low) - m.Low;
+    Part& part = this->Parts[p];
+    part.Hi += high;
+    part.Lo += low;
+  }
+
+  /**
+   * Every point's sum after the second pass: `write(point, s, exponent)` with the sum
+   * s * 2^exponent (s zero for a point without contributions).
+   */
+  template <class WriteFn>
+  void Finish(const WriteFn& write) const
+  {
+    for (std::size_t p = 0; p < this->Size(); ++p)
+    {
+      const detail::V4 sum = this->Parts[p].Hi + this->Parts[p].Lo;
       const double s[3] = { sum[0], sum[1], sum[2] };
-      write(static_cast<std::int32_t>(p), s, this->Count[p] > 0 ? this->Top[p] + 1 : 0);
+      write(static_cast<std::int32_t>(p), s, this->CountOf[p] > 0 ? this->Top[p] + 1 : 0);
     }
   }
 
@@ -248,20 +261,12 @@ public:
   }
 
 private:
-  struct Item // four doubles' worth: loaded as one register
-  {
-    double V[3];
-    int E;
-    std::int32_t Point;
-  };
-  static_assert(sizeof(Item) == sizeof(detail::V4), "an item is one register");
   struct Part
   {
     detail::V4 Hi = {}, Lo = {}; // the exact sums of the high and of the low parts
   };
-  std::vector<int> Top;            // largest exponent of a contribution's largest component
-  std::vector<std::int32_t> Count; // contributions per point
-  std::vector<Item> Items;
+  std::vector<int> Top;              // largest exponent of a contribution's largest component
+  std::vector<std::int32_t> CountOf; // contributions per point
   std::vector<Part> Parts;
   std::vector<Magic> Grid; // each point's rounding constants
 };

@@ -53,7 +53,13 @@ Sum SumOf(const std::vector<Contribution>& items)
   sums.Reset(1);
   for (const Contribution& c : items)
   {
-    sums.Add(0, c.V, c.E);
+    sums.Count(0, c.V, c.E);
+  }
+  // The second pass in the reverse order: each pass is order-independent by itself.
+  sums.StartDeposits();
+  for (auto c = items.rbegin(); c != items.rend(); ++c)
+  {
+    sums.Deposit(0, c->V, c->E);
   }
   Sum out{};
   sums.Finish(
@@ -212,8 +218,11 @@ TEST(PointSums, PointsWithoutContributionsAndZeroContributionsGiveZero)
   sums.Reset(3);
   const double zero[3] = { 0.0, -0.0, 0.0 };
   const double one[3] = { 0.0, 1.0, 0.0 };
-  sums.Add(1, zero, 5);
-  sums.Add(2, one, 0);
+  sums.Count(1, zero, 5);
+  sums.Count(2, one, 0);
+  sums.StartDeposits();
+  sums.Deposit(1, zero, 5);
+  sums.Deposit(2, one, 0);
   std::vector<Sum> out(3);
   sums.Finish(
     [&](std::int32_t p, const double s[3], int e)
