@@ -1324,6 +1324,20 @@ PHONGVTK_INLINE void CertifiedAreaVectors4(const T* const corner[3][4], Certifie
 }
 } // namespace detail
 
+/// Four unit normals (component by component, one per lane) as 12 consecutive values
+/// x0 y0 z0 x1 ... z3 of type O.
+template <class O>
+PHONGVTK_INLINE void StoreNormals4(O* out, const detail::V4 n[3])
+{
+  using Vec = std::conditional_t<std::is_same<O, float>::value, detail::V4f, detail::V4>;
+  const Vec x = __builtin_convertvector(n[0], Vec);
+  const Vec y = __builtin_convertvector(n[1], Vec);
+  const Vec z = __builtin_convertvector(n[2], Vec);
+  const Vec v[3] = { { x[0], y[0], z[0], x[1] }, { y[1], z[1], x[2], y[2] },
+    { z[2], x[3], y[3], z[3] } };
+  std::memcpy(out, v, sizeof(v));
+}
+
 /**
  * Four triangles in accuracy mode A; `corner[v][j]` points at the coordinates of vertex v of
  * triangle j.

@@ -218,20 +218,68 @@ void WriteNormal(const double s[3], O* normal)
  * set of its contributions alone: the same whatever the order of the cells or their partition
  * among processes.
  */
+/**
+ * WriteNormal of four consecutive points' sums, bit for bit: the four square roots and
+ * divisions at once where the sums lie in NormalizeDouble's unscaled window.
+ */
 template <class O>
-void NormalizeSums(vtkIdType first, vtkIdType count, const ScaledSum* sums,
-  const InvariantSums* invariant, O* normals)
+PHONGVTK_INLINE void WriteNormals4(const double s[4][3], O* normals)
 {
-  if (!invariant)
+  using detail::V4;
+  V4 v[3];
+  for (int c = 0; c < 3; ++c)
   {
-    for (vtkIdType i = 0; i < count; ++i)
-    {
-      WriteNormal(sums[i].S, normals + 3 * (first + i));
-    }
+    v[c] = V4{ s[0][c], s[1][c], s[2][c], s[3][c] };
+  }
+  const int window = detail::InWindow(v, 0x1p-500, 0x1p500);
+  const V4 length = detail::Sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  V4 n[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    n[c] = v[c] / length;
+  }
+  if (window == 15)
+  {
+    StoreNormals4(normals, n);
     return;
   }
-  invariant->Finish(
-    [&](std::int32_t i, const double sum[3], int) { WriteNormal(sum, normals + 3 * (first + i)); });
+  for (int j = 0; j < 4; ++j)
+  {
+    if (window & (1 << j))
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        normals[3 * j + c] = static_cast<O>(n[c][j]);
+      }
+    }
+    else
+    {
+      WriteNormal(s[j], normals + 3 * j);
+    }
+  }
+}
+
+/// The unit normals of the points [first, first + count) from their sums: `sum(i, s)` gives
+/// point first + i's sum.
+template <class O, class SumFn>
+void NormalizeSums(vtkIdType first, vtkIdType count, const SumFn& sum, O* normals)
+{
+  vtkIdType i = 0;
+  for (; i + 4 <= count; i += 4)
+  {
+    double s[4][3];
+    for (int j = 0; j < 4; ++j)
+    {
+      sum(i + j, s[j]);
+    }
+    WriteNormals4(s, normals + 3 * (first + i));
+  }
+  for (; i < count; ++i)
+  {
+    double s[3];
+    sum(i, s);
+    WriteNormal(s, normals + 3 * (first + i));
+  }
 }
 
 /**
@@ -333,14 +381,20 @@ struct PointNormalPass
             buffers.Invariant.StartDeposits();
             this->ScatterRange<A>(
               PointRange<SumPass::Deposit>{ first, count, nullptr, &buffers.Invariant });
-            NormalizeSums(first, count, nullptr, &buffers.Invariant, pointNormals);
+            const InvariantSums& sums = buffers.Invariant;
+            NormalizeSums(
+              first, count, [&sums](vtkIdType i, double s[3]) { sums.SumOf(i, s); }, pointNormals);
           }
           else
           {
             buffers.Sums.assign(static_cast<std::size_t>(count), ScaledSum());
             this->ScatterRange<A>(
               PointRange<SumPass::CellOrder>{ first, count, buffers.Sums.data(), nullptr });
-            NormalizeSums(first, count, buffers.Sums.data(), nullptr, pointNormals);
+            const ScaledSum* sums = buffers.Sums.data();
+            NormalizeSums(
+              first, count,
+              [sums](vtkIdType i, double s[3]) { std::copy(sums[i].S, sums[i].S + 3, s); },
+              pointNormals);
           }
         }
       },

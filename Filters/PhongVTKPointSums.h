@@ -20,6 +20,8 @@
 
 #include "PhongVTKAreaVector.h"
 
+#include "vtkType.h"
+
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -228,10 +230,26 @@ public:
   {
     for (std::size_t p = 0; p < this->Size(); ++p)
     {
-      const detail::V4 sum = this->Parts[p].Hi + this->Parts[p].Lo;
-      const double s[3] = { sum[0], sum[1], sum[2] };
-      write(static_cast<std::int32_t>(p), s, this->CountOf[p] > 0 ? this->Top[p] + 1 : 0);
+      double s[3];
+      this->SumOf(static_cast<vtkIdType>(p), s);
+      write(static_cast<std::int32_t>(p), s, this->ExponentOf(static_cast<vtkIdType>(p)));
     }
+  }
+
+  /// Point p's sum after the second pass is s * 2^ExponentOf(p).
+  PHONGVTK_INLINE void SumOf(vtkIdType p, double s[3]) const
+  {
+    const Part& part = this->Parts[static_cast<std::size_t>(p)];
+    const detail::V4 sum = part.Hi + part.Lo;
+    s[0] = sum[0];
+    s[1] = sum[1];
+    s[2] = sum[2];
+  }
+
+  int ExponentOf(vtkIdType p) const
+  {
+    const std::size_t i = static_cast<std::size_t>(p);
+    return this->CountOf[i] > 0 ? this->Top[i] + 1 : 0;
   }
 
   /// The two rounding constants of a point with `count` contributions (1.5 * 2^52 times the grid

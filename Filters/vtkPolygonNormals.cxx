@@ -97,21 +97,6 @@ inline void WriteCell(const CellOutputs<O>& out, vtkIdType cell, const AreaVecto
   }
 }
 
-/// The unit normals of four cells (component by component, one cell per lane) as 12
-/// consecutive values x0 y0 z0 x1 ... z3.
-template <class O>
-PHONGVTK_INLINE void StoreNormals4(O* out, const phongvtk::detail::V4 n[3])
-{
-  using Vec =
-    std::conditional_t<std::is_same<O, float>::value, phongvtk::detail::V4f, phongvtk::detail::V4>;
-  const Vec x = __builtin_convertvector(n[0], Vec);
-  const Vec y = __builtin_convertvector(n[1], Vec);
-  const Vec z = __builtin_convertvector(n[2], Vec);
-  const Vec v[3] = { { x[0], y[0], z[0], x[1] }, { y[1], z[1], x[2], y[2] },
-    { z[2], x[3], y[3], z[3] } };
-  std::memcpy(out, v, sizeof(v));
-}
-
 /**
  * vtkSMPTools functor over a range of one cell array (polygons or strips): validates the point
  * ids, evaluates the area vector kernel and writes the requested outputs.
@@ -153,7 +138,8 @@ struct AreaVectorWorker
         phongvtk::ComputeTriangles4<A, T>(corner, lanes);
         if (lanes.Done == 15 && this->NormalsOnly)
         {
-          StoreNormals4(this->Out.Normals + 3 * (this->FirstOutputCell + cell), lanes.Normal);
+          phongvtk::StoreNormals4(
+            this->Out.Normals + 3 * (this->FirstOutputCell + cell), lanes.Normal);
         }
         else
         {
