@@ -469,18 +469,22 @@ struct PointNormalPass
           detail::V4 w[3];
           detail::DoubleAreaVectors4<T>(corner, w);
           const int done = detail::InWindow(w, 0x1p-500, 0x1p500);
+          // InvariantSums::TopOf of the four faces (in the window: normal, non-zero).
+          detail::V4i tops = {};
+          if constexpr (std::is_same<Range, PointRange<SumPass::Count>>::value)
+          {
+            const detail::V4 a0 = detail::Abs(w[0]), a1 = detail::Abs(w[1]), a2 = detail::Abs(w[2]);
+            detail::V4 m = a0 > a1 ? a0 : a1;
+            m = m > a2 ? m : a2;
+            tops = ((reinterpret_cast<detail::V4i>(m) >> 52) & 0x7ff) - 1023;
+          }
           for (int j = 0; j < 4; ++j, ++cell)
           {
             const Conn* ids = conn + offsets[cell];
             if (done & (1 << j))
             {
               const detail::V4 face = { w[0][j], w[1][j], w[2][j], 0.0 };
-              int top = 0;
-              if constexpr (std::is_same<Range, PointRange<SumPass::Count>>::value)
-              {
-                const double v[3] = { face[0], face[1], face[2] };
-                top = InvariantSums::TopOf(v, 0);
-              }
+              const int top = static_cast<int>(tops[j]);
               for (int i = 0; i < 3; ++i)
               {
                 const vtkIdType id = static_cast<vtkIdType>(ids[i]);

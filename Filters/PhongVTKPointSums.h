@@ -141,13 +141,9 @@ class InvariantSums
 {
 public:
   /// Forgets every contribution and starts the first pass; the points are [0, points).
-  void Reset(std::size_t points)
-  {
-    this->Top.assign(points, INT_MIN);
-    this->CountOf.assign(points, 0);
-  }
+  void Reset(std::size_t points) { this->Points.assign(points, PointState{}); }
 
-  std::size_t Size() const { return this->Top.size(); }
+  std::size_t Size() const { return this->Points.size(); }
 
   /// The exponent Count() needs: that of V's largest component plus E (INT_MIN for a zero V).
   static PHONGVTK_INLINE int TopOf(const double v[3], int e)
@@ -170,8 +166,9 @@ public:
       return;
     }
     const std::size_t p = static_cast<std::size_t>(point);
-    this->Top[p] = std::max(this->Top[p], top);
-    ++this->CountOf[p];
+    PointState& state = this->Points[p];
+    state.Top = std::max(state.Top, top);
+    ++state.Count;
   }
 
   /// Ends the first pass: every point's grids.
@@ -182,7 +179,8 @@ public:
     this->Grid.resize(n);
     for (std::size_t p = 0; p < n; ++p)
     {
-      this->Grid[p] = GridOf(this->CountOf[p], this->CountOf[p] > 0 ? -this->Top[p] - 1 : 0);
+      const PointState& state = this->Points[p];
+      this->Grid[p] = GridOf(state.Count, state.Count > 0 ? -state.Top - 1 : 0);
     }
   }
 
@@ -210,7 +208,7 @@ public:
     }
     else
     {
-      const int k = e - this->Top[p] - 1;
+      const int k = e - this->Points[p].Top - 1;
       x = V4{ detail::Scale2(v[0], k), detail::Scale2(v[1], k), detail::Scale2(v[2], k), 0.0 };
     }
     // fl(x + M) - M is x rounded to M's ulp, a function of x alone (ties to even), and exact.
@@ -249,7 +247,7 @@ public:
   int ExponentOf(vtkIdType p) const
   {
     const std::size_t i = static_cast<std::size_t>(p);
-    return this->CountOf[i] > 0 ? this->Top[i] + 1 : 0;
+    return this->Points[i].Count > 0 ? this->Points[i].Top + 1 : 0;
   }
 
   /// The two rounding constants of a point with `count` contributions (1.5 * 2^52 times the grid
@@ -283,8 +281,12 @@ private:
   {
     detail::V4 Hi = {}, Lo = {}; // the exact sums of the high and of the low parts
   };
-  std::vector<int> Top;              // largest exponent of a contribution's largest component
-  std::vector<std::int32_t> CountOf; // contributions per point
+  struct PointState // the first pass's findings, side by side: one cache line a corner
+  {
+    int Top = INT_MIN;      // largest exponent of a contribution's largest component
+    std::int32_t Count = 0; // contributions
+  };
+  std::vector<PointState> Points;
   std::vector<Part> Parts;
   std::vector<Magic> Grid; // each point's rounding constants
 };

@@ -149,8 +149,9 @@ public:
   ///@{
   /**
    * Point normals independent of the order of the cells and of the partition of the mesh into
-   * pieces. Default is on. A point adds its faces' contributions in an order set by their values
-   * instead of in cell order (measured: the point pass takes twice as long), and, computing one
+   * pieces. Default is on. A point's contributions are rounded onto grids fixed by the point's
+   * own contributions and summed exactly, in two passes over its faces (measured: the point pass
+   * takes about twice the cell-order one), and, computing one
    * piece of several (ParaView's pvbatch/pvserver), the filter asks upstream for one more level
    * of ghost cells: the points on the boundaries between pieces then get exactly, bit for bit,
    * the normals of the whole mesh. Ghost cells asked for only for this are removed from the
