@@ -466,14 +466,80 @@ PHONGVTK_INLINE void Add4(V4& hi, V4& lo, V4 bHi, V4 bLo)
   lo = e - (hi - s2);
 }
 
+/// NormInWindow lane by lane: the same operations.
+PHONGVTK_INLINE V4 NormInWindow4(const V4 hi[3], const V4 lo[3], V4& normLo, V4& inverse)
+{
+  V4 p[3], e[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    TwoProduct(hi[c], hi[c], p[c], e[c]);
+    e[c] += 2.0 * hi[c] * lo[c];
+  }
+  V4 s1, t1, s2, t2;
+  TwoSum(p[0], p[1], s1, t1);
+  TwoSum(s1, p[2], s2, t2);
+  const V4 b = (t1 + t2) + (e[0] + e[1] + e[2]);
+  const V4 sHi = s2 + b;
+  const V4 sLo = b - (sHi - s2);
+  const V4 r = Sqrt(sHi);
+  inverse = 1.0 / r;
+  const V4 residual = Fma(-r, r, sHi) + sLo;
+  const V4 correction = 0.5 * residual * inverse;
+  const V4 normHi = r + correction;
+  normLo = correction - (normHi - r);
+  return normHi;
+}
+
 /**
- * ExactVisibleAreaOf's certified stage for a direction, four triangles at once: the conditions
- * for entering it (no tiny difference, no overflow risk, not every component zero), then
- * CertifiedVisibleArea with v exact, its `continue` for zero components as a lane mask. Returns
- * the lanes that certify; their areas are bit for bit the per-polygon kernel's.
+ * EyeVectorDD for four triangles (n = 3): S = sum_i (E - p_i) in double-double with its bound,
+ * scaled into [1, 2) by a power of two. Returns the lanes where EyeVectorDD succeeds (the same
+ * operations, so the same bits there).
  */
-PHONGVTK_INLINE int CertifiedVisibleAreas4(
-  const View& view, const CertifiedLanes& w, double area[4])
+template <class T>
+PHONGVTK_INLINE V4i EyeVectorsDD4(
+  const T* const corner[3][4], const double eye[3], V4 hi[3], V4 lo[3], V4 err[3])
+{
+  V4i ok = ~V4i{};
+  for (int c = 0; c < 3; ++c)
+  {
+    V4 sumHi = {}, sumLo = {}, magnitude = {};
+    for (int v = 0; v < 3; ++v)
+    {
+      V4 dHi, dLo;
+      TwoSum(V4{} + eye[c], -GatherAxis<V4>(corner[v], c), dHi, dLo); // exact
+      Add4(sumHi, sumLo, dHi, dLo);
+      magnitude += Abs(dHi);
+    }
+    ok &= magnitude <= 0x1p900;
+    hi[c] = sumHi;
+    lo[c] = sumLo;
+    err[c] = 1.01 * 3.0 * (0x1p-100 * magnitude + 0x1p-1070);
+  }
+  const V4 m0 = Abs(hi[0]), m1 = Abs(hi[1]), m2 = Abs(hi[2]);
+  V4 m = m0 > m1 ? m0 : m1;
+  m = m > m2 ? m : m2;
+  ok &= m > 0x1p-900;
+  // Scale2(x, -k) with k = Exponent2(m), m normal: times the power of two of biased exponent
+  // 2046 minus m's.
+  const V4i biased = (reinterpret_cast<V4i>(m) >> 52) & 0x7ff;
+  const V4 scale = reinterpret_cast<V4>((2046 - biased) << 52);
+  for (int c = 0; c < 3; ++c)
+  {
+    hi[c] = ok ? hi[c] * scale : hi[c];
+    lo[c] = ok ? lo[c] * scale : lo[c];
+    err[c] = ok ? err[c] * scale : err[c];
+  }
+  return ok;
+}
+
+/**
+ * ExactVisibleAreaOf's certified stage, four triangles at once: the conditions for entering it
+ * (no tiny difference, no overflow risk, not every component zero), then CertifiedVisibleArea
+ * with v = vHi + vLo (bounds vErr) and its norm, the `continue` for zero components as a lane
+ * mask. Returns the lanes that certify; their areas are bit for bit the per-polygon kernel's.
+ */
+PHONGVTK_INLINE int CertifiedVisibleAreas4(const V4 vHi[3], const V4 vLo[3], const V4 vErr[3],
+  V4 normHi, V4 normLo, V4 normInverse, const CertifiedLanes& w, double area[4])
 {
   V4i ok = ~w.Tiny, allZero = ~V4i{}, exactZero = ~V4i{};
   V4i wZero[3];
@@ -484,34 +550,33 @@ PHONGVTK_INLINE int CertifiedVisibleAreas4(
     wZero[c] = w.Permanent[c] == 0.0;
     wErr[c] = wZero[c] ? V4{} : w.Bound[c];
     allZero &= wZero[c];
-    exactZero &= wZero[c] | (view.Vector[c] == 0.0 ? ~V4i{} : V4i{});
+    exactZero &= wZero[c] | ((vHi[c] == 0.0) & (vLo[c] == 0.0) & (vErr[c] == 0.0));
   }
   V4 dHi = {}, dLo = {}, cross = {}, magnitude = {}, err = {};
-  const V4 zero = {};
   for (int c = 0; c < 3; ++c)
   {
-    const V4 v = V4{} + view.Vector[c];
     V4 p, e, hi = dHi, lo = dLo;
-    TwoProduct(v, w.Hi[c], p, e);
+    TwoProduct(vHi[c], w.Hi[c], p, e);
     Add4(hi, lo, p, e);
     dHi = wZero[c] ? dHi : hi;
     dLo = wZero[c] ? dLo : lo;
-    const V4 crossNext = cross + (v * w.Lo[c] + zero * w.Hi[c]);
+    const V4 crossNext = cross + (vHi[c] * w.Lo[c] + vLo[c] * w.Hi[c]);
     cross = wZero[c] ? cross : crossNext;
-    const V4 av = Abs(v) + Abs(zero);
+    const V4 av = Abs(vHi[c]) + Abs(vLo[c]);
     const V4 aw = Abs(w.Hi[c]) + Abs(w.Lo[c]);
     const V4 magnitudeNext = magnitude + av * aw;
     magnitude = wZero[c] ? magnitude : magnitudeNext;
-    const V4 errNext = err + (av * wErr[c] + aw * zero + zero * wErr[c]);
+    const V4 errNext = err + (av * wErr[c] + aw * vErr[c] + vErr[c] * wErr[c]);
     err = wZero[c] ? err : errNext;
   }
   Add4(dHi, dLo, cross, V4{});
   err = 1.01 * (err + 0x1p-100 * magnitude) + 0x1p-1060;
-  const V4i certified = err <= 0x1p-56 * Abs(dHi);
-  // DivideDD by the direction's norm.
-  const V4 q1 = dHi * view.NormInverse;
-  const V4 rem = Fma(-q1, V4{} + view.Norm.Hi, dHi) + (dLo - q1 * view.Norm.Lo);
-  const V4 quotient = 0.5 * (q1 + rem * view.NormInverse);
+  V4i certified = err <= 0x1p-56 * Abs(dHi);
+  certified &= 1.01 * (vErr[0] + vErr[1] + vErr[2]) <= 0x1p-58 * normHi;
+  // DivideDD by the norm.
+  const V4 q1 = dHi * normInverse;
+  const V4 rem = Fma(-q1, normHi, dHi) + (dLo - q1 * normLo);
+  const V4 quotient = 0.5 * (q1 + rem * normInverse);
   for (int j = 0; j < 4; ++j)
   {
     area[j] = exactZero[j] ? 0.0 : quotient[j];
@@ -521,7 +586,7 @@ PHONGVTK_INLINE int CertifiedVisibleAreas4(
 } // namespace detail
 
 /**
- * Visible areas of four triangles, one per lane, in mode A (EXACT: along a direction only);
+ * Visible areas of four triangles, one per lane, in mode A;
  * `corner[v][j]` points at vertex v of triangle j. Returns the lanes (bit j: triangle j) whose
  * `area[j]` is bit for bit what ComputeVisibleArea gives with status Ok: FAST, DOUBLE and
  * COMPENSATED where the per-polygon kernel leaves the area vector in its safe window at exponent
@@ -536,13 +601,28 @@ PHONGVTK_INLINE int VisibleAreas4(const T* const corner[3][4], const View& view,
   int done;
   if constexpr (A == Accuracy::Exact)
   {
-    if (view.Eye)
-    {
-      return 0; // the per-polygon kernel's double-double eye vector
-    }
     CertifiedLanes c;
     CertifiedAreaVectors4<T>(corner, c);
-    return CertifiedVisibleAreas4(view, c, area);
+    V4 vHi[3], vLo[3], vErr[3], normHi, normLo, normInverse;
+    int eyeOk = 15;
+    if (view.Eye)
+    {
+      eyeOk = LaneBits(EyeVectorsDD4<T>(corner, view.Vector, vHi, vLo, vErr));
+      normHi = NormInWindow4(vHi, vLo, normLo, normInverse);
+    }
+    else
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        vHi[k] = V4{} + view.Vector[k];
+        vLo[k] = vErr[k] = V4{};
+      }
+      // A direction's norm, computed once (SetDirection).
+      normHi = V4{} + view.Norm.Hi;
+      normLo = V4{} + view.Norm.Lo;
+      normInverse = V4{} + view.NormInverse;
+    }
+    return eyeOk & CertifiedVisibleAreas4(vHi, vLo, vErr, normHi, normLo, normInverse, c, area);
   }
   else if constexpr (A == Accuracy::Double)
   {

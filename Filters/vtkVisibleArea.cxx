@@ -84,8 +84,7 @@ struct CellPass
           CellCounts& counts = this->Counts->Local();
           // Runs of triangles go four at a time, one per SIMD lane; a triangle outside the
           // common case takes the per-polygon path.
-          const bool lanes =
-            !strips && !this->InputAreaVectors && !(A == Accuracy::Exact && this->TheView.Eye);
+          const bool lanes = !strips && !this->InputAreaVectors;
           for (vtkIdType cell = b; cell < e; ++cell)
           {
             if (lanes && cell + 4 <= e && phongvtk::AreFourTriangles(offsets, cell) &&
