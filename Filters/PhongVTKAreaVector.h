@@ -957,6 +957,31 @@ PHONGVTK_INLINE V4 Sqrt(V4 v)
 #endif
 }
 
+/// NormInWindow of four double-double vectors hi + lo, lane by lane: the same operations, so the
+/// same bits; returns the norm's high part.
+PHONGVTK_INLINE V4 NormInWindow4(const V4 hi[3], const V4 lo[3], V4& normLo, V4& inverse)
+{
+  V4 p[3], e[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    TwoProduct(hi[c], hi[c], p[c], e[c]);
+    e[c] += 2.0 * hi[c] * lo[c];
+  }
+  V4 s1, t1, s2, t2;
+  TwoSum(p[0], p[1], s1, t1);
+  TwoSum(s1, p[2], s2, t2);
+  const V4 b = (t1 + t2) + (e[0] + e[1] + e[2]);
+  const V4 sHi = s2 + b;
+  const V4 sLo = b - (sHi - s2);
+  const V4 r = Sqrt(sHi);
+  inverse = 1.0 / r;
+  const V4 residual = Fma(-r, r, sHi) + sLo;
+  const V4 correction = 0.5 * residual * inverse;
+  const V4 normHi = r + correction;
+  normLo = correction - (normHi - r);
+  return normHi;
+}
+
 /**
  * NormalizeFaithful of four double-double vectors h + l inside its unscaled window, one per SIMD
  * lane: the same operations, so the results are bitwise the same; the square roots and divisions
@@ -964,24 +989,8 @@ PHONGVTK_INLINE V4 Sqrt(V4 v)
  */
 PHONGVTK_INLINE void NormalizeFaithful4(const V4 h[3], const V4 l[3], V4 n[3], V4& length)
 {
-  V4 p[3], e[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    TwoProduct(h[c], h[c], p[c], e[c]);
-    e[c] += 2.0 * h[c] * l[c];
-  }
-  V4 s1, t1, s2, t2;
-  TwoSum(p[0], p[1], s1, t1);
-  TwoSum(s1, p[2], s2, t2);
-  const V4 sLo0 = (t1 + t2) + (e[0] + e[1] + e[2]);
-  const V4 sHi = s2 + sLo0;
-  const V4 sLo = sLo0 - (sHi - s2);
-  const V4 root = Sqrt(sHi);
-  const V4 inverse = 1.0 / root;
-  const V4 residual = Fma(-root, root, sHi) + sLo;
-  const V4 correction = 0.5 * residual * inverse;
-  const V4 normHi = root + correction;
-  const V4 normLo = correction - (normHi - root);
+  V4 normLo, inverse;
+  const V4 normHi = NormInWindow4(h, l, normLo, inverse);
   for (int c = 0; c < 3; ++c)
   {
     const V4 q1 = h[c] * inverse;

@@ -466,30 +466,6 @@ PHONGVTK_INLINE void Add4(V4& hi, V4& lo, V4 bHi, V4 bLo)
   lo = e - (hi - s2);
 }
 
-/// NormInWindow lane by lane: the same operations.
-PHONGVTK_INLINE V4 NormInWindow4(const V4 hi[3], const V4 lo[3], V4& normLo, V4& inverse)
-{
-  V4 p[3], e[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    TwoProduct(hi[c], hi[c], p[c], e[c]);
-    e[c] += 2.0 * hi[c] * lo[c];
-  }
-  V4 s1, t1, s2, t2;
-  TwoSum(p[0], p[1], s1, t1);
-  TwoSum(s1, p[2], s2, t2);
-  const V4 b = (t1 + t2) + (e[0] + e[1] + e[2]);
-  const V4 sHi = s2 + b;
-  const V4 sLo = b - (sHi - s2);
-  const V4 r = Sqrt(sHi);
-  inverse = 1.0 / r;
-  const V4 residual = Fma(-r, r, sHi) + sLo;
-  const V4 correction = 0.5 * residual * inverse;
-  const V4 normHi = r + correction;
-  normLo = correction - (normHi - r);
-  return normHi;
-}
-
 /**
  * EyeVectorDD for four triangles (n = 3): S = sum_i (E - p_i) in double-double with its bound,
  * scaled into [1, 2) by a power of two. Returns the lanes where EyeVectorDD succeeds (the same
