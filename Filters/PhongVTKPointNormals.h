@@ -441,8 +441,8 @@ struct PointNormalPass
     }
   }
 
-  /// Points per range (PointRangeSize): a range's invariant sums keep every contribution until
-  /// the range is done, so their ranges are smaller.
+  /// Points per range (PointRangeSize): invariant sums hold three times the state a point
+  /// (exponent and count, grids, two-part sums: about 100 bytes), so their ranges are smaller.
   vtkIdType RangeSize(const std::vector<IdSpan>& spans, vtkIdType numPolys) const
   {
     return PointRangeSize(spans, numPolys, this->NumberOfPoints, phongvtk::Threads(numPolys),
