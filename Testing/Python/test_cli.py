@@ -8,6 +8,7 @@ import os
 import re
 import subprocess
 import sys
+import time
 
 import numpy as np
 import pytest
@@ -414,6 +415,68 @@ def test_bench_quick_prints_both_tables_and_writes_plots(phongvtk_cli, tmp_path)
     assert "Phong rms/max" in result.stdout
     for plot in ("normals-ladder.png", "shading-error-vs-tessellation.png"):
         assert read_png(tmp_path / "plots" / plot).shape[0] > 100
+
+
+class CountingFilter:
+    """Stands in for a VTK filter in the speed harness: counts its updates, each lasting longer
+    than the harness's batch (so a batch is one call)."""
+
+    def __init__(self):
+        self.updates = 0
+
+    def Modified(self):
+        pass
+
+    def Update(self):
+        time.sleep(0.025)
+        self.updates += 1
+
+
+def test_speed_harness_warms_up_and_calls_untimed_before_every_batch():
+    from phongvtk import speed
+    filters = {"a": CountingFilter(), "b": CountingFilter()}
+    assert speed.batch_size(CountingFilter()) == 1
+    speed.time_filters(filters, rounds=2)
+    for f in filters.values():
+        # Two warm-up calls, one to size the batch, then per round one untimed call and the
+        # batch of one.
+        assert f.updates == 2 + 1 + 2 * 2
+
+
+def speed_result(vtk, pdn_cells, cells, exact, tmpn, points, in_cell_order):
+    ms = {"vtkPolyDataNormals cells": pdn_cells, "cells DOUBLE": cells, "cells EXACT": exact,
+          "vtkTriangleMeshPointNormals": tmpn, "vtkPolyDataNormals points": 10 * tmpn,
+          "points DOUBLE": points, "points DOUBLE in cell order": in_cell_order,
+          "visible area DOUBLE": cells, "visible area EXACT": exact,
+          "visible area DOUBLE + max": 3 * cells}
+    mesh = {"name": "m", "cells": 8, "points": 6, "ms": ms, "floor cells ms": 1.0,
+            "floor points ms": 1.0}
+    return {"vtk": vtk, "backend": "Sequential", "threads": 1, "bandwidth": 1e10,
+            "meshes": [mesh]}
+
+
+def goal_lines(report):
+    """The report's ratio lines that carry a goal, by ratio name."""
+    return {line[2:48].strip(): line for line in report.splitlines()
+            if line.startswith("  ") and ">=" in line}
+
+
+def test_speed_report_marks_each_goal_for_its_vtk_generation():
+    from phongvtk import speed
+    # VTK 9.2: cells 50x (goal 40), EXACT 10x (goal 20), points 6x TMPN (goal 5).
+    lines = goal_lines(speed.format_report(
+        [speed_result("9.2.20230111", 500.0, 10.0, 50.0, 60.0, 10.0, 5.0)]))
+    assert lines["cells DOUBLE / vtkPolyDataNormals"].endswith(">= 40 met")
+    assert lines["cells EXACT / vtkPolyDataNormals"].endswith(">= 20 NOT met")
+    assert lines["points DOUBLE / vtkTriangleMeshPointNormals"].endswith(">= 5 met")
+    assert "points DOUBLE / vtkPolyDataNormals points" not in lines  # no goal against 9.2
+    # VTK 9.6: cells 5x (4), EXACT 2.5x (2), points 1.5x TMPN (2), 15x PDN points (8).
+    lines = goal_lines(speed.format_report(
+        [speed_result("9.6.2", 50.0, 10.0, 20.0, 15.0, 10.0, 5.0)]))
+    assert lines["cells DOUBLE / vtkPolyDataNormals"].endswith(">= 4 met")
+    assert lines["cells EXACT / vtkPolyDataNormals"].endswith(">= 2 met")
+    assert lines["points DOUBLE / vtkTriangleMeshPointNormals"].endswith(">= 2 NOT met")
+    assert lines["points DOUBLE / vtkPolyDataNormals points"].endswith(">= 8 met")
 
 
 def test_bench_exact_mode_is_faithful_on_the_sample(phongvtk_cli, sphere_off):
