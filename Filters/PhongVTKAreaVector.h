@@ -957,6 +957,27 @@ PHONGVTK_INLINE V4 Sqrt(V4 v)
 #endif
 }
 
+/// The largest |v_c| of each lane (lanes free of NaN).
+PHONGVTK_INLINE V4 MaxAbs4(const V4 v[3])
+{
+  const V4 a0 = Abs(v[0]), a1 = Abs(v[1]), a2 = Abs(v[2]);
+  const V4 m = a0 > a1 ? a0 : a1;
+  return m > a2 ? m : a2;
+}
+
+/// Exponent2(m) of each lane, for normal m.
+PHONGVTK_INLINE V4i Exponent2(V4 m)
+{
+  return ((reinterpret_cast<V4i>(m) >> 52) & 0x7ff) - 1023;
+}
+
+/// 2^-Exponent2(m) of each lane, for normal m whose inverse binade is normal too: Scale2(x, -k)
+/// is then x times it, and m times it lies in [1, 2).
+PHONGVTK_INLINE V4 InverseBinade(V4 m)
+{
+  return reinterpret_cast<V4>((2046 - ((reinterpret_cast<V4i>(m) >> 52) & 0x7ff)) << 52);
+}
+
 /// NormInWindow of four double-double vectors hi + lo, lane by lane: the same operations, so the
 /// same bits; returns the norm's high part.
 PHONGVTK_INLINE V4 NormInWindow4(const V4 hi[3], const V4 lo[3], V4& normLo, V4& inverse)

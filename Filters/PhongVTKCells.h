@@ -77,6 +77,15 @@ inline bool AreFourTriangles(const Offsets* offsets, vtkIdType cell)
   return o[1] - o[0] == 3 && o[2] - o[1] == 3 && o[3] - o[2] == 3 && o[4] - o[3] == 3;
 }
 
+/// Whether cells cell ... cell + 3 are triangles whose point ids lie in [0, numberOfPoints).
+template <class Offsets, class Connectivity>
+inline bool AreFourValidTriangles(const Offsets* offsets, const Connectivity* connectivity,
+  vtkIdType cell, vtkIdType numberOfPoints)
+{
+  return AreFourTriangles(offsets, cell) &&
+    ValidIds(connectivity + offsets[cell], 12, numberOfPoints);
+}
+
 } // namespace phongvtk
 
 #endif

@@ -473,10 +473,7 @@ struct PointNormalPass
           detail::V4i tops = {};
           if constexpr (std::is_same<Range, PointRange<SumPass::Count>>::value)
           {
-            const detail::V4 a0 = detail::Abs(w[0]), a1 = detail::Abs(w[1]), a2 = detail::Abs(w[2]);
-            detail::V4 m = a0 > a1 ? a0 : a1;
-            m = m > a2 ? m : a2;
-            tops = ((reinterpret_cast<detail::V4i>(m) >> 52) & 0x7ff) - 1023;
+            tops = detail::Exponent2(detail::MaxAbs4(w));
           }
           for (int j = 0; j < 4; ++j, ++cell)
           {

@@ -105,6 +105,24 @@ inline bool SetDirection(View& view, const double d[3])
   return true;
 }
 
+/// sum += d in the arithmetic of mode A (COMPENSATED: TwoSum, its error into err), for doubles
+/// and for four lanes alike.
+template <Accuracy A, class Real>
+PHONGVTK_INLINE void AddEyeDifference(Real& sum, Real& err, Real d)
+{
+  if constexpr (A == Accuracy::Compensated)
+  {
+    Real t, e;
+    TwoSum(sum, d, t, e);
+    sum = t;
+    err += e;
+  }
+  else
+  {
+    sum += d;
+  }
+}
+
 /**
  * S = sum_i (E - p_i) (toward the eye from the vertex mean, times n), scaled into [1, 2) by a
  * power of two; a compensated sum for COMPENSATED, a plain double sum otherwise. False when S is
@@ -120,18 +138,7 @@ bool EyeVector(const VertexFn& vertex, std::int64_t n, const double eye[3], doub
       double sum = 0.0, err = 0.0;
       for (std::int64_t i = 0; i < n; ++i)
       {
-        const double d = eye[c] * pre - static_cast<double>(vertex(i)[c]) * pre;
-        if constexpr (A == Accuracy::Compensated)
-        {
-          double t, e;
-          TwoSum(sum, d, t, e);
-          sum = t;
-          err += e;
-        }
-        else
-        {
-          sum += d;
-        }
+        AddEyeDifference<A>(sum, err, eye[c] * pre - static_cast<double>(vertex(i)[c]) * pre);
       }
       s[c] = sum + err;
     }
@@ -421,29 +428,13 @@ PHONGVTK_INLINE int EyeVectors4(
     V4 sum = {}, err = {};
     for (int v = 0; v < 3; ++v)
     {
-      const V4 d = eye[c] * 1.0 - GatherAxis<V4>(corner[v], c) * 1.0;
-      if constexpr (A == Accuracy::Compensated)
-      {
-        V4 t, e;
-        TwoSum(sum, d, t, e);
-        sum = t;
-        err += e;
-      }
-      else
-      {
-        sum += d;
-      }
+      AddEyeDifference<A, V4>(sum, err, eye[c] * 1.0 - GatherAxis<V4>(corner[v], c) * 1.0);
     }
     s[c] = sum + err;
   }
-  const V4 m0 = Abs(s[0]), m1 = Abs(s[1]), m2 = Abs(s[2]);
-  V4 m = m0 > m1 ? m0 : m1;
-  m = m > m2 ? m : m2;
+  const V4 m = MaxAbs4(s);
   const V4i inRange = (m >= 0x1p-1000) & (m <= 0x1p1000);
-  // Scale2(s_c, -k) with k = Exponent2(m): times the power of two whose biased exponent is 2046
-  // minus m's (in range both are normal, and 1 <= m 2^-k < 2).
-  const V4i biased = (reinterpret_cast<V4i>(m) >> 52) & 0x7ff;
-  const V4 scale = reinterpret_cast<V4>((2046 - biased) << 52);
+  const V4 scale = InverseBinade(m); // ScaleToUnitRange's Scale2(s_c, -k)
   for (int c = 0; c < 3; ++c)
   {
     s[c] = inRange ? s[c] * scale : s[c];
@@ -491,14 +482,9 @@ PHONGVTK_INLINE V4i EyeVectorsDD4(
     lo[c] = sumLo;
     err[c] = 1.01 * 3.0 * (0x1p-100 * magnitude + 0x1p-1070);
   }
-  const V4 m0 = Abs(hi[0]), m1 = Abs(hi[1]), m2 = Abs(hi[2]);
-  V4 m = m0 > m1 ? m0 : m1;
-  m = m > m2 ? m : m2;
+  const V4 m = MaxAbs4(hi);
   ok &= m > 0x1p-900;
-  // Scale2(x, -k) with k = Exponent2(m), m normal: times the power of two of biased exponent
-  // 2046 minus m's.
-  const V4i biased = (reinterpret_cast<V4i>(m) >> 52) & 0x7ff;
-  const V4 scale = reinterpret_cast<V4>((2046 - biased) << 52);
+  const V4 scale = InverseBinade(m); // EyeVectorDD's Scale2(x, -k)
   for (int c = 0; c < 3; ++c)
   {
     hi[c] = ok ? hi[c] * scale : hi[c];

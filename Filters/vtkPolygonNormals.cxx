@@ -128,7 +128,9 @@ struct AreaVectorWorker
     vtkIdType pending = 0;
     for (vtkIdType cell = begin; cell < end;)
     {
-      if (!this->Strips && cell + 4 <= end && this->AreFourValidTriangles(cell))
+      if (!this->Strips && cell + 4 <= end &&
+        phongvtk::AreFourValidTriangles(
+          this->CellOffsets, this->CellConnectivity, cell, this->NumberOfPoints))
       {
         // Runs of triangles go four at a time, one per SIMD lane; a triangle outside the
         // common case takes the per-polygon path.
@@ -175,16 +177,6 @@ struct AreaVectorWorker
         pending = 0;
       }
     }
-  }
-
-  /// Whether cells cell ... cell + 3 are triangles with valid point ids.
-  bool AreFourValidTriangles(vtkIdType cell) const
-  {
-    if (!AreFourTriangles(this->CellOffsets, cell))
-    {
-      return false;
-    }
-    return ValidIds(this->CellConnectivity + this->CellOffsets[cell], 12, this->NumberOfPoints);
   }
 
   /// The area vector of one cell, its normal possibly pending; an out-of-range point id is

@@ -87,8 +87,8 @@ struct CellPass
           const bool lanes = !strips && !this->InputAreaVectors;
           for (vtkIdType cell = b; cell < e; ++cell)
           {
-            if (lanes && cell + 4 <= e && phongvtk::AreFourTriangles(offsets, cell) &&
-              ValidIds(conn + offsets[cell], 12, this->NumberOfPoints))
+            if (lanes && cell + 4 <= e &&
+              phongvtk::AreFourValidTriangles(offsets, conn, cell, this->NumberOfPoints))
             {
               const T* corner[3][4];
               phongvtk::TriangleCorners(this->Points, offsets, conn, cell, corner);
