@@ -54,11 +54,34 @@ struct RawCells
     fn(state.GetOffsets()->GetPointer(0), state.GetConnectivity()->GetPointer(0));
   }
 };
-/// Pointers to the coordinates of the corners of triangles `cell` ... `cell + 3`.
+
+/**
+ * Asks the memory for the point ids a kilobyte past cell `cell`'s: the passes read the
+ * connectivity once, in order, and with the hardware's prefetcher alone the loads of the ids
+ * kept the passes waiting (measured on 2M triangles: a quarter of the point pass's time on one
+ * load; point normals 45 -> 38 ms, DOUBLE cell normals 18.4 -> 16.0 ms).
+ */
+template <class Offsets, class Connectivity>
+inline void PrefetchCells(const Offsets* offsets, const Connectivity* connectivity, vtkIdType cell)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  // An address, not a pointer into the array: it may lie past the end.
+  __builtin_prefetch(reinterpret_cast<const void*>(
+    reinterpret_cast<std::uintptr_t>(connectivity + offsets[cell]) + 1024));
+#else
+  (void)offsets;
+  (void)connectivity;
+  (void)cell;
+#endif
+}
+
+/// Pointers to the coordinates of the corners of triangles `cell` ... `cell + 3` (and the
+/// connectivity further on asked for: PrefetchCells).
 template <class T, class Offsets, class Connectivity>
 inline void TriangleCorners(const T* points, const Offsets* offsets,
   const Connectivity* connectivity, vtkIdType cell, const T* corner[3][4])
 {
+  PrefetchCells(offsets, connectivity, cell);
   for (int j = 0; j < 4; ++j)
   {
     const Connectivity* ids = connectivity + offsets[cell + j];

@@ -196,6 +196,7 @@ private:
           const vtkIdType end = std::min(numCells, begin + CellBlock);
           for (vtkIdType cell = begin; cell < end; ++cell)
           {
+            PrefetchCells(offsets, conn, cell);
             const std::int64_t m = offsets[cell + 1] - offsets[cell];
             if (m < 2 || skip(s.FirstCell + cell))
             {

@@ -46,6 +46,36 @@ struct IdSpan
   }
 };
 
+/**
+ * The smallest and the largest of ids[0, n) (n > 0). Eight independent minima and maxima, so that
+ * the comparisons of one id do not wait for those of the previous one (the loop then runs at
+ * the memory's speed; one running pair took twice as long).
+ */
+template <class Id>
+inline void IdExtent(const Id* ids, std::size_t n, Id& first, Id& last)
+{
+  constexpr int Lanes = 8;
+  Id lo[Lanes], hi[Lanes];
+  std::fill(lo, lo + Lanes, ids[0]);
+  std::fill(hi, hi + Lanes, ids[0]);
+  std::size_t k = 0;
+  for (; k + Lanes <= n; k += Lanes)
+  {
+    for (int j = 0; j < Lanes; ++j)
+    {
+      lo[j] = ids[k + j] < lo[j] ? ids[k + j] : lo[j];
+      hi[j] = ids[k + j] > hi[j] ? ids[k + j] : hi[j];
+    }
+  }
+  for (; k < n; ++k)
+  {
+    lo[0] = std::min(lo[0], ids[k]);
+    hi[0] = std::max(hi[0], ids[k]);
+  }
+  first = *std::min_element(lo, lo + Lanes);
+  last = *std::max_element(hi, hi + Lanes);
+}
+
 /// The span of every block of CellBlock cells of `cells` (in parallel).
 inline std::vector<IdSpan> BlockSpans(vtkCellArray* cells)
 {
@@ -64,17 +94,16 @@ inline std::vector<IdSpan> BlockSpans(vtkCellArray* cells)
         {
           for (vtkIdType b = begin; b < end; ++b)
           {
-            using Id = std::remove_cv_t<std::remove_pointer_t<decltype(conn)>>;
-            Id first = std::numeric_limits<Id>::max();
-            Id last = std::numeric_limits<Id>::lowest();
+            const auto start = offsets[b * CellBlock];
             const auto stop = offsets[std::min(numCells, (b + 1) * CellBlock)];
-            for (auto k = offsets[b * CellBlock]; k < stop; ++k)
+            IdSpan& span = spans[static_cast<std::size_t>(b)];
+            span = IdSpan{ 0, -1 };
+            if (stop > start)
             {
-              first = std::min(first, conn[k]);
-              last = std::max(last, conn[k]);
+              std::remove_cv_t<std::remove_pointer_t<decltype(conn)>> first, last;
+              IdExtent(conn + start, static_cast<std::size_t>(stop - start), first, last);
+              span = IdSpan{ first, last };
             }
-            spans[static_cast<std::size_t>(b)] =
-              stop > offsets[b * CellBlock] ? IdSpan{ first, last } : IdSpan{ 0, -1 };
           }
         });
     });
