@@ -25,8 +25,8 @@ using phongvtk::IdSpan;
 template <class Id>
 void CheckExtents(std::mt19937_64& random)
 {
-  std::uniform_int_distribution<Id> any(std::numeric_limits<Id>::lowest(),
-    std::numeric_limits<Id>::max());
+  std::uniform_int_distribution<Id> any(
+    std::numeric_limits<Id>::lowest(), std::numeric_limits<Id>::max());
   for (std::size_t n = 1; n <= 70; ++n)
   {
     for (int trial = 0; trial < 20; ++trial)
