@@ -155,6 +155,23 @@ bool EyeVector(const VertexFn& vertex, std::int64_t n, const double eye[3], doub
   return false;
 }
 
+/// Dot2 (Ogita, Rump and Oishi) of two 3-vectors: of doubles, or of four lanes (V4) with the
+/// same operations lane by lane.
+template <class R>
+PHONGVTK_INLINE R Dot2(const R v[3], const R w[3])
+{
+  R s = {}, err = {};
+  for (int c = 0; c < 3; ++c)
+  {
+    R p, e, t, f;
+    TwoProduct(v[c], w[c], p, e);
+    TwoSum(s, p, t, f);
+    s = t;
+    err += e + f;
+  }
+  return s + err;
+}
+
 /// v.w in the arithmetic of mode A (FAST: float; DOUBLE: double; COMPENSATED: Dot2).
 template <Accuracy A>
 PHONGVTK_INLINE double Dot(const double v[3], const double w[3])
@@ -174,16 +191,7 @@ PHONGVTK_INLINE double Dot(const double v[3], const double w[3])
   }
   else
   {
-    double s = 0.0, err = 0.0;
-    for (int c = 0; c < 3; ++c)
-    {
-      double p, e, t, f;
-      TwoProduct(v[c], w[c], p, e);
-      TwoSum(s, p, t, f);
-      s = t;
-      err += e + f;
-    }
-    return s + err;
+    return Dot2(v, w);
   }
 }
 
@@ -401,16 +409,7 @@ PHONGVTK_INLINE V4 Dot4(const V4 v[3], const V4 w[3])
   }
   else
   {
-    V4 s = {}, err = {};
-    for (int c = 0; c < 3; ++c)
-    {
-      V4 p, e, t, f;
-      TwoProduct(v[c], w[c], p, e);
-      TwoSum(s, p, t, f);
-      s = t;
-      err += e + f;
-    }
-    return s + err;
+    return Dot2(v, w);
   }
 }
 
