@@ -1,5 +1,5 @@
-// Exact fallbacks of the EXACT accuracy mode: the area vector and the visible area in GMP
-// integer arithmetic.
+// Exact fallbacks of the EXACT accuracy mode: the area vector, the visible area and the
+// feature-angle decision in GMP integer arithmetic.
 //
 // Every finite double is m * 2^e with an integer m of at most 53 bits. Scaling the whole polygon
 // by 2^-emin (emin the smallest such e) turns every coordinate into an integer, so differences,
@@ -7,6 +7,7 @@
 // polygons the double-double filter cannot certify come here (exact cancellation, coordinates
 // outside the safe exponent window), so clarity wins over speed.
 #include "PhongVTKAreaVector.h"
+#include "PhongVTKFeatureAngle.h"
 #include "PhongVTKVisibleArea.h"
 
 #include <gmp.h>
@@ -254,6 +255,53 @@ VisibleAreaResult ExactVisibleArea(
   const double area = std::ldexp(q, static_cast<int>(std::max(-4000L, std::min(4000L, exponent))));
   constexpr double top = std::numeric_limits<double>::max();
   return { std::max(-top, std::min(top, area)), StatusOk };
+}
+
+bool ExactFeatureEdgeIsSharp(
+  const double* xyz1, std::int64_t n1, const double* xyz2, std::int64_t n2, double c)
+{
+  // One scale for both polygons: W1 in units of 2^(2 emin), A = W1.W2 in units of 2^(4 emin)
+  // and B = |W1|^2 |W2|^2 in units of 2^(8 emin), so A and sqrt(B) compare as integers.
+  const int emin = LowestExponent(xyz1, 3 * n1, LowestExponent(xyz2, 3 * n2));
+  if (emin == INT_MAX)
+  {
+    return true; // every coordinate zero: no direction
+  }
+  std::array<Integer, 3> w1, w2;
+  ExactIntegerAreaVector(xyz1, n1, emin, w1);
+  ExactIntegerAreaVector(xyz2, n2, emin, w2);
+  Integer a, b1, b2;
+  for (int k = 0; k < 3; ++k)
+  {
+    mpz_addmul(a.get(), w1[k].get(), w2[k].get());
+    mpz_addmul(b1.get(), w1[k].get(), w1[k].get());
+    mpz_addmul(b2.get(), w2[k].get(), w2[k].get());
+  }
+  if (mpz_sgn(b1.get()) == 0 || mpz_sgn(b2.get()) == 0)
+  {
+    return true;
+  }
+  const int sa = mpz_sgn(a.get());
+  // A <= c sqrt(B): with c > 0 true for A <= 0, else A^2 <= c^2 B; with c < 0 false for A >= 0,
+  // else A^2 >= c^2 B; with c = 0 exactly A <= 0.
+  if (c == 0.0 || (c > 0.0 && sa <= 0) || (c < 0.0 && sa >= 0))
+  {
+    return c == 0.0 ? sa <= 0 : c > 0.0;
+  }
+  // c = m 2^e with an integer m of 53 bits; |c| <= 1 makes e <= -52, so
+  // A^2 <=> c^2 B is A^2 2^(-2e) <=> m^2 B.
+  int e;
+  const double f = std::frexp(std::fabs(c), &e);
+  e -= 53;
+  Integer lhs, rhs, m;
+  mpz_set_d(m.get(), std::ldexp(f, 53));
+  mpz_mul(lhs.get(), a.get(), a.get());
+  mpz_mul_2exp(lhs.get(), lhs.get(), static_cast<mp_bitcnt_t>(-2 * e));
+  mpz_mul(rhs.get(), b1.get(), b2.get());
+  mpz_mul(rhs.get(), rhs.get(), m.get());
+  mpz_mul(rhs.get(), rhs.get(), m.get());
+  const int order = mpz_cmp(lhs.get(), rhs.get());
+  return c > 0.0 ? order <= 0 : order >= 0;
 }
 
 } // namespace detail

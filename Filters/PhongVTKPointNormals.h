@@ -298,6 +298,8 @@ struct PointNormalPass
   bool PieceInvariant;
   std::vector<IdSpan> Spans = {}; // see ComputeSpans
   bool SpansReady = false;
+  double ProgressStart = 0.0; // the pass reports progress start + scale * [0, 1]
+  double ProgressScale = 1.0;
 
   /// Polygons per block of the point pass.
   static constexpr vtkIdType PolyBlock = CellBlock;
@@ -355,7 +357,7 @@ struct PointNormalPass
     const std::vector<IdSpan>& spans = this->Spans;
     const vtkIdType rangeSize = this->RangeSize(spans, numPolys);
     const vtkIdType numRanges = (this->NumberOfPoints + rangeSize - 1) / rangeSize;
-    this->Filter->UpdateProgress(0.6);
+    this->Filter->UpdateProgress(this->ProgressStart + this->ProgressScale * 0.6);
 
     struct Buffers
     {

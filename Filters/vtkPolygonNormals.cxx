@@ -2,9 +2,11 @@
 
 #include "PhongVTKAreaVector.h"
 #include "PhongVTKCells.h"
+#include "PhongVTKFeatureAngle.h"
 #include "PhongVTKOptions.h"
 #include "PhongVTKParallel.h"
 #include "PhongVTKPointNormals.h"
+#include "PhongVTKSplitting.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -12,6 +14,7 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -233,6 +236,8 @@ public:
   CellOutputs<O> Out;
   vtkIdType NonFinite = 0;
   vtkIdType FirstBadCell = -1;
+  double ProgressStart = 0.0; // progress is reported as start + scale * [0, 1]
+  double ProgressScale = 1.0;
 
   bool Run(O* pointNormals)
   {
@@ -247,6 +252,8 @@ public:
     // output passes them through.
     phongvtk::PointNormalPass<T, O> pointPass{ this->Filter, input->GetPolys(), input->GetStrips(),
       this->Points, this->NumberOfPoints, this->Weighting, this->PieceInvariant };
+    pointPass.ProgressStart = this->ProgressStart;
+    pointPass.ProgressScale = this->ProgressScale;
     vtkSMPThreadLocal<CellCounts> counts;
     this->CheckCells(input->GetVerts(), 0, counts, true);
     this->CheckCells(input->GetLines(), numVerts, counts, true);
@@ -412,8 +419,9 @@ private:
     {
       const vtkIdType end = std::min(n, begin + block);
       vtkSMPTools::For(begin, end, phongvtk::Grain(end - begin, n), worker);
-      this->Filter->UpdateProgress(
-        share * static_cast<double>(firstCell + end) / static_cast<double>(numCells));
+      this->Filter->UpdateProgress(this->ProgressStart +
+        this->ProgressScale * share * static_cast<double>(firstCell + end) /
+          static_cast<double>(numCells));
     }
   }
 };
@@ -493,9 +501,96 @@ void vtkPolygonNormals::SetOutputPrecision(int precision)
 //------------------------------------------------------------------------------
 namespace
 {
+/// Progress: splitting reports [0, SplitShare), the normals of the split mesh the rest.
+constexpr double SplitShare = 0.3;
+
+/**
+ * Splitting (the Splitting option): the polygons' unit normals and status in the accuracy mode,
+ * in double; the regions around every point (PhongVTKSplitting.h), the edges between them
+ * decided as PhongVTKFeatureAngle.h says; and the mesh with the copies appended. Null when a
+ * cell refers to a point that does not exist (firstBadCell names it).
+ */
+template <class T>
+vtkSmartPointer<vtkPolyData> SplitSharpEdges(
+  vtkPolygonNormals* self, vtkPolyData* input, const T* points, vtkIdType& firstBadCell)
+{
+  const vtkIdType numCells = input->GetNumberOfCells();
+  std::vector<double> normals(3 * static_cast<std::size_t>(numCells));
+  std::vector<unsigned char> status(static_cast<std::size_t>(numCells));
+  Computation<T, double> faces;
+  faces.Filter = self;
+  faces.Input = input;
+  faces.Points = points;
+  faces.NumberOfPoints = input->GetNumberOfPoints();
+  faces.AccuracyMode = self->GetAccuracy();
+  faces.Weighting = self->GetPointWeighting();
+  faces.PointNormals = false;
+  faces.PieceInvariant = self->GetPieceInvariant();
+  faces.Out.Normals = normals.data();
+  faces.Out.Status = status.data();
+  faces.ProgressScale = SplitShare / 2;
+  if (!faces.Run(nullptr))
+  {
+    firstBadCell = faces.FirstBadCell;
+    return nullptr;
+  }
+  if (self->GetAbortExecute())
+  {
+    return input;
+  }
+  phongvtk::SplitPolygons split;
+  if (input->GetNumberOfPolys() > 0)
+  {
+    const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
+    const double c = std::cos(vtkMath::RadiansFromDegrees(self->GetFeatureAngle()));
+    const bool exact = self->GetAccuracy() == vtkPolygonNormals::EXACT;
+    input->GetPolys()->Visit(RawCells{},
+      [&](const auto* offsets, const auto* conn)
+      {
+        auto directed = [&](vtkIdType f)
+        {
+          return status[static_cast<std::size_t>(firstPoly + f)] == phongvtk::StatusOk;
+        };
+        auto coordinates = [&](vtkIdType f, std::vector<double>& xyz)
+        {
+          const std::int64_t n = offsets[f + 1] - offsets[f];
+          xyz.resize(static_cast<std::size_t>(3 * n));
+          for (std::int64_t i = 0; i < 3 * n; ++i)
+          {
+            xyz[static_cast<std::size_t>(i)] = static_cast<double>(
+              points[3 * static_cast<std::int64_t>(conn[offsets[f] + i / 3]) + i % 3]);
+          }
+          return n;
+        };
+        auto smooth = [&](vtkIdType f1, vtkIdType f2)
+        {
+          const double* n1 = normals.data() + 3 * (firstPoly + f1);
+          const double* n2 = normals.data() + 3 * (firstPoly + f2);
+          if (!exact)
+          {
+            return phongvtk::FeatureEdgeFromNormals(n1, n2, c) == phongvtk::FeatureEdge::Smooth;
+          }
+          const phongvtk::FeatureEdge edge = phongvtk::CertifiedFeatureEdge(n1, n2, c);
+          if (edge != phongvtk::FeatureEdge::Undecided)
+          {
+            return edge == phongvtk::FeatureEdge::Smooth;
+          }
+          std::vector<double> xyz1, xyz2;
+          const std::int64_t m1 = coordinates(f1, xyz1);
+          const std::int64_t m2 = coordinates(f2, xyz2);
+          return !phongvtk::detail::ExactFeatureEdgeIsSharp(xyz1.data(), m1, xyz2.data(), m2, c);
+        };
+        split =
+          phongvtk::SplitAtSharpEdges(input->GetPoints(), input->GetPolys(), directed, smooth);
+      });
+  }
+  self->UpdateProgress(SplitShare);
+  return phongvtk::MeshWithCopies(input, split, self->GetComputeOriginalPointIds());
+}
+
 template <class T, class O>
 bool Dispatch(vtkPolygonNormals* self, vtkPolyData* input, vtkPolyData* output, const T* points,
-  vtkIdType& nonFinite, vtkIdType& firstBadCell)
+  double progressStart, vtkIdType& nonFinite, vtkIdType& firstBadCell)
 {
   const vtkIdType numCells = input->GetNumberOfCells();
   const vtkIdType numPoints = input->GetNumberOfPoints();
@@ -508,6 +603,8 @@ bool Dispatch(vtkPolygonNormals* self, vtkPolyData* input, vtkPolyData* output, 
   run.Weighting = self->GetPointWeighting();
   run.PieceInvariant = self->GetPieceInvariant();
   run.PointNormals = self->GetComputePointNormals();
+  run.ProgressStart = progressStart;
+  run.ProgressScale = 1.0 - progressStart;
 
   vtkSmartPointer<vtkDataArray> normals, areaVectors, areas, pointNormals;
   vtkSmartPointer<vtkUnsignedCharArray> status;
@@ -626,26 +723,48 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
     return 1;
   }
 
-  vtkSmartPointer<vtkDataArray> data = phongvtk::KernelCoordinates(points);
+  vtkIdType nonFinite = 0;
+  vtkIdType firstBadCell = -1;
+  bool ok = true;
+  double progressStart = 0.0;
+  vtkSmartPointer<vtkPolyData> source = input;
+  if (this->Splitting && this->ComputePointNormals)
+  {
+    vtkSmartPointer<vtkDataArray> data = phongvtk::KernelCoordinates(points);
+    void* raw = data->GetVoidPointer(0);
+    source = data->GetDataType() == VTK_FLOAT
+      ? SplitSharpEdges(this, input, static_cast<const float*>(raw), firstBadCell)
+      : SplitSharpEdges(this, input, static_cast<const double*>(raw), firstBadCell);
+    ok = source != nullptr;
+    if (ok)
+    {
+      output->ShallowCopy(source);
+      points = source->GetPoints();
+      progressStart = SplitShare;
+    }
+  }
+
   const int pointType = points->GetData()->GetDataType();
   const bool doubleOutput = this->OutputPrecision == DOUBLE_PRECISION ||
     (this->OutputPrecision == DEFAULT_PRECISION && pointType == VTK_DOUBLE);
-
-  vtkIdType nonFinite = 0;
-  vtkIdType firstBadCell = -1;
-  bool ok;
-  void* raw = data->GetVoidPointer(0);
-  if (data->GetDataType() == VTK_FLOAT)
+  if (ok && !this->GetAbortExecute())
   {
-    const auto* p = static_cast<const float*>(raw);
-    ok = doubleOutput ? Dispatch<float, double>(this, input, output, p, nonFinite, firstBadCell)
-                      : Dispatch<float, float>(this, input, output, p, nonFinite, firstBadCell);
-  }
-  else
-  {
-    const auto* p = static_cast<const double*>(raw);
-    ok = doubleOutput ? Dispatch<double, double>(this, input, output, p, nonFinite, firstBadCell)
-                      : Dispatch<double, float>(this, input, output, p, nonFinite, firstBadCell);
+    vtkSmartPointer<vtkDataArray> data = phongvtk::KernelCoordinates(points);
+    void* raw = data->GetVoidPointer(0);
+    if (data->GetDataType() == VTK_FLOAT)
+    {
+      const auto* p = static_cast<const float*>(raw);
+      ok = doubleOutput
+        ? Dispatch<float, double>(this, source, output, p, progressStart, nonFinite, firstBadCell)
+        : Dispatch<float, float>(this, source, output, p, progressStart, nonFinite, firstBadCell);
+    }
+    else
+    {
+      const auto* p = static_cast<const double*>(raw);
+      ok = doubleOutput
+        ? Dispatch<double, double>(this, source, output, p, progressStart, nonFinite, firstBadCell)
+        : Dispatch<double, float>(this, source, output, p, progressStart, nonFinite, firstBadCell);
+    }
   }
   if (!ok)
   {
@@ -691,5 +810,9 @@ void vtkPolygonNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ComputeAreas: " << (this->ComputeAreas ? "On" : "Off") << "\n";
   os << indent << "ComputeNormalStatus: " << (this->ComputeNormalStatus ? "On" : "Off") << "\n";
   os << indent << "PieceInvariant: " << (this->PieceInvariant ? "On" : "Off") << "\n";
+  os << indent << "Splitting: " << (this->Splitting ? "On" : "Off") << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "ComputeOriginalPointIds: " << (this->ComputeOriginalPointIds ? "On" : "Off")
+     << "\n";
   os << indent << "OutputPrecision: " << PrecisionNames[this->OutputPrecision] << "\n";
 }

@@ -164,6 +164,46 @@ public:
 
   ///@{
   /**
+   * Split the points at sharp edges before the point normals are computed, so that a crease
+   * keeps its edge under smooth shading (vtkPolyDataNormals' Splitting). Around each point the
+   * polygons are grouped into regions joined across smooth manifold edges; the first region keeps
+   * the point, every further one gets a copy of it, appended to the points with every point array
+   * copied, and its polygons refer to the copy. Boundary and non-manifold edges (three or more
+   * polygons) separate regions; a polygon without a direction (zero area, non-finite) joins none
+   * and keeps the point. Only polygons are split; strips, lines and vertices keep their ids.
+   * Takes effect with ComputePointNormals only (nothing else depends on it). Default is off, so
+   * that the points pass through unchanged unless asked.
+   */
+  vtkSetMacro(Splitting, bool);
+  vtkGetMacro(Splitting, bool);
+  vtkBooleanMacro(Splitting, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The feature angle of Splitting, in degrees, clamped to [0, 180]: an edge is sharp when the
+   * angle between its two polygons' area vectors is at least this angle, i.e. when
+   * `w1.w2 <= c |w1| |w2|` with c the double value of cos(FeatureAngle). EXACT decides that sign
+   * exactly from the double coordinates; FAST, DOUBLE and COMPENSATED compare the dot product of
+   * their own unit normals with c. Default is 30.
+   */
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * With Splitting, produce the vtkIdType point array `OriginalPointIds`: for every output point
+   * the input point it stands for (itself for the input's points, the split point for a copy).
+   * Default is on.
+   */
+  vtkSetMacro(ComputeOriginalPointIds, bool);
+  vtkGetMacro(ComputeOriginalPointIds, bool);
+  vtkBooleanMacro(ComputeOriginalPointIds, bool);
+  ///@}
+
+  ///@{
+  /**
    * Precision of the output arrays: vtkAlgorithm::SINGLE_PRECISION (default, VTK's convention
    * for normals), DOUBLE_PRECISION, or DEFAULT_PRECISION (that of the input points). Another
    * value is an error and leaves the precision unchanged.
@@ -189,6 +229,9 @@ protected:
   bool ComputeAreas = false;
   bool ComputeNormalStatus = false;
   bool PieceInvariant = true;
+  bool Splitting = false;
+  double FeatureAngle = 30.0;
+  bool ComputeOriginalPointIds = true;
   int OutputPrecision = SINGLE_PRECISION;
 
 private:

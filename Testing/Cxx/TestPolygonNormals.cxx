@@ -705,7 +705,8 @@ TEST(PolygonNormalsApi, PrintSelfMentionsEveryMember)
   const std::string text = os.str();
   for (const char* member : { "Accuracy: EXACT", "PointWeighting: MAX", "ComputeCellNormals: On",
          "ComputePointNormals: Off", "ComputeAreaVectors: Off", "ComputeAreas: On",
-         "ComputeNormalStatus: Off", "OutputPrecision" })
+         "ComputeNormalStatus: Off", "PieceInvariant: On", "Splitting: Off", "FeatureAngle: 30",
+         "ComputeOriginalPointIds: On", "OutputPrecision" })
   {
     EXPECT_NE(text.find(member), std::string::npos) << "PrintSelf lacks '" << member << "'";
   }
@@ -2245,12 +2246,14 @@ public:
 TEST(PolygonNormalsProgress, ReachesOneMonotonically)
 {
   auto mesh = JitteredSphere(400, 1e-4);
-  for (bool pointNormals : { false, true })
+  // Cells only, point normals, point normals after splitting.
+  for (int pass : { 0, 1, 2 })
   {
     vtkNew<vtkPolygonNormals> f;
     vtkNew<ProgressRecorder> progress;
     f->AddObserver(vtkCommand::ProgressEvent, progress);
-    f->SetComputePointNormals(pointNormals);
+    f->SetComputePointNormals(pass > 0);
+    f->SetSplitting(pass == 2);
     f->SetInputData(mesh);
     f->Update();
     const std::vector<double>& v = progress->Values;
@@ -2266,13 +2269,14 @@ TEST(PolygonNormalsProgress, ReachesOneMonotonically)
 TEST(PolygonNormalsProgress, AbortFromAProgressObserverStopsEarly)
 {
   auto mesh = JitteredSphere(400, 1e-4);
-  for (bool pointNormals : { false, true })
+  for (int pass : { 0, 1, 2 })
   {
     vtkNew<vtkPolygonNormals> f;
     vtkNew<ProgressRecorder> progress;
     progress->AbortAbove = 0.0;
     f->AddObserver(vtkCommand::ProgressEvent, progress);
-    f->SetComputePointNormals(pointNormals);
+    f->SetComputePointNormals(pass > 0);
+    f->SetSplitting(pass == 2);
     f->SetInputData(mesh);
     f->Update();
     ASSERT_GE(progress->AbortedAt, 0);

@@ -1,0 +1,349 @@
+/**
+ * @file PhongVTKSplitting.h
+ * @brief Private: feature-angle splitting of vtkPolygonNormals. The polygons around each point
+ * are grouped into regions joined across smooth manifold edges; the first region keeps the
+ * point, every further region gets a copy of it appended to the points, and the polygons of that
+ * region refer to the copy.
+ *
+ * Two polygons around point p are joined across the edge (p, q) when exactly two polygons have
+ * the edge p-q as one of their edges at p (a manifold edge), both have a direction (a non-zero,
+ * finite area vector) and the edge is smooth (`smooth(f1, f2)`). Boundary and non-manifold edges
+ * (three or more polygons) separate regions, as in vtkPolyDataNormals. A polygon without a
+ * direction joins no region and keeps the point: it contributes to no normal and adds no copy.
+ * Regions are numbered by their smallest polygon index, so the one holding the point's first
+ * polygon keeps the point; which polygons form a region depends on the geometry alone, never on
+ * the thread count, the cell order or the partition of the mesh.
+ */
+#ifndef PhongVTKSplitting_h
+#define PhongVTKSplitting_h
+
+#include "PhongVTKCells.h"
+#include "PhongVTKParallel.h"
+
+#include "vtkCellArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkStaticCellLinksTemplate.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace phongvtk
+{
+/// The result of splitting: the polygons with their new point ids, and the input point of every
+/// appended copy (copy i is output point numberOfPoints + i).
+struct SplitPolygons
+{
+  vtkSmartPointer<vtkCellArray> Polys;
+  std::vector<vtkIdType> CopyOf;
+};
+
+/**
+ * The regions of the polygons around one point: `Faces` (the polygons using the point, sorted,
+ * each once) and `Label` of each (0 for the first region and for polygons without a direction,
+ * 1, 2, ... for the regions whose copies are appended), `Regions` their number.
+ */
+struct PointRegions
+{
+  std::vector<vtkIdType> Faces;
+  std::vector<std::int32_t> Label;
+  std::int32_t Regions = 0;
+
+  // Scratch: union-find parents, and (neighbour q, polygon index) of every edge p-q at p.
+  std::vector<std::int32_t> Parent;
+  std::vector<std::pair<vtkIdType, std::int32_t>> Edges;
+
+  std::int32_t Root(std::int32_t i)
+  {
+    while (this->Parent[i] != i)
+    {
+      this->Parent[i] = this->Parent[this->Parent[i]];
+      i = this->Parent[i];
+    }
+    return i;
+  }
+
+  /**
+   * Groups the polygons `cells[0 .. count)` around point p (a polygon listed once for each time
+   * it uses p). `corners(f, fn)` calls fn(previous id, next id) for each corner of polygon f at
+   * p; `directed(f)` says whether f has a direction, `smooth(f1, f2)` whether the edge between
+   * two directed polygons is smooth.
+   */
+  template <class CornersFn, class DirectedFn, class SmoothFn>
+  void Compute(vtkIdType p, const vtkIdType* cells, vtkIdType count, const CornersFn& corners,
+    const DirectedFn& directed, const SmoothFn& smooth)
+  {
+    this->Faces.assign(cells, cells + count);
+    std::sort(this->Faces.begin(), this->Faces.end());
+    this->Faces.erase(std::unique(this->Faces.begin(), this->Faces.end()), this->Faces.end());
+    const auto n = static_cast<std::int32_t>(this->Faces.size());
+    this->Parent.resize(static_cast<std::size_t>(n));
+    std::iota(this->Parent.begin(), this->Parent.end(), 0);
+    this->Edges.clear();
+    for (std::int32_t i = 0; i < n; ++i)
+    {
+      corners(this->Faces[i],
+        [&](vtkIdType previous, vtkIdType next)
+        {
+          if (previous != p)
+          {
+            this->Edges.emplace_back(previous, i);
+          }
+          if (next != p)
+          {
+            this->Edges.emplace_back(next, i);
+          }
+        });
+    }
+    std::sort(this->Edges.begin(), this->Edges.end());
+    for (std::size_t e = 0; e < this->Edges.size();)
+    {
+      std::size_t end = e + 1;
+      while (end < this->Edges.size() && this->Edges[end].first == this->Edges[e].first)
+      {
+        ++end;
+      }
+      if (end - e == 2)
+      {
+        const std::int32_t a = this->Edges[e].second;
+        const std::int32_t b = this->Edges[e + 1].second;
+        const vtkIdType fa = this->Faces[a];
+        const vtkIdType fb = this->Faces[b];
+        if (a != b && directed(fa) && directed(fb) && smooth(fa, fb))
+        {
+          const std::int32_t ra = this->Root(a);
+          const std::int32_t rb = this->Root(b);
+          this->Parent[std::max(ra, rb)] = std::min(ra, rb);
+        }
+      }
+      e = end;
+    }
+    // Faces are sorted, so regions are met in the order of their smallest polygon.
+    this->Label.assign(static_cast<std::size_t>(n), 0);
+    this->Regions = 0;
+    std::vector<std::int32_t>& labelOfRoot = this->Parent; // reused once the roots are known
+    for (std::int32_t i = 0; i < n; ++i)
+    {
+      this->Label[i] = directed(this->Faces[i]) ? this->Root(i) : -1;
+    }
+    std::fill(labelOfRoot.begin(), labelOfRoot.end(), -1);
+    for (std::int32_t i = 0; i < n; ++i)
+    {
+      const std::int32_t root = this->Label[i];
+      if (root < 0)
+      {
+        this->Label[i] = 0;
+        continue;
+      }
+      if (labelOfRoot[root] < 0)
+      {
+        labelOfRoot[root] = this->Regions++;
+      }
+      this->Label[i] = labelOfRoot[root];
+    }
+  }
+
+  /// The label of polygon f (one of Faces).
+  std::int32_t LabelOf(vtkIdType f) const
+  {
+    const auto at = std::lower_bound(this->Faces.begin(), this->Faces.end(), f);
+    return this->Label[static_cast<std::size_t>(at - this->Faces.begin())];
+  }
+};
+
+/**
+ * Splits the points of `polys` (every point id valid) at sharp edges. `directed(f)` and
+ * `smooth(f1, f2)` as for PointRegions, f the index of a polygon in `polys`; both are called from
+ * several threads. The points are taken in parallel, each on its own: the same result for any
+ * number of threads.
+ */
+template <class DirectedFn, class SmoothFn>
+SplitPolygons SplitAtSharpEdges(
+  vtkPoints* points, vtkCellArray* polys, const DirectedFn& directed, const SmoothFn& smooth)
+{
+  const vtkIdType numPoints = points->GetNumberOfPoints();
+  const vtkIdType numPolys = polys->GetNumberOfCells();
+  vtkNew<vtkPolyData> surface;
+  surface->SetPoints(points);
+  surface->SetPolys(polys);
+  vtkStaticCellLinksTemplate<vtkIdType> links;
+  links.BuildLinks(surface);
+
+  // The corners of polygon f at point p: (previous, next) point ids of each.
+  auto forCorners = [](const auto* offsets, const auto* conn, vtkIdType f, vtkIdType p, auto&& fn)
+  {
+    const auto* ids = conn + offsets[f];
+    const vtkIdType m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
+    for (vtkIdType k = 0; k < m; ++k)
+    {
+      if (static_cast<vtkIdType>(ids[k]) == p)
+      {
+        fn(k, static_cast<vtkIdType>(ids[(k + m - 1) % m]),
+          static_cast<vtkIdType>(ids[(k + 1) % m]));
+      }
+    }
+  };
+
+  // First pass: each point's regions; the label of every link (point, polygon) is kept.
+  const vtkIdType linkCount = links.GetLinksSize();
+  std::vector<std::int32_t> linkLabel(static_cast<std::size_t>(linkCount));
+  std::vector<vtkIdType> copies(static_cast<std::size_t>(numPoints) + 1, 0);
+  vtkSMPThreadLocal<PointRegions> scratch;
+  polys->Visit(RawCells{},
+    [&](const auto* offsets, const auto* conn)
+    {
+      phongvtk::For(0, numPoints, numPolys,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          PointRegions& regions = scratch.Local();
+          for (vtkIdType p = begin; p < end; ++p)
+          {
+            const vtkIdType count = links.GetNumberOfCells(p);
+            const vtkIdType* cells = links.GetCells(p);
+            const std::size_t first = static_cast<std::size_t>(links.GetOffset(p));
+            if (count < 2)
+            {
+              std::fill_n(linkLabel.begin() + static_cast<std::ptrdiff_t>(first), count, 0);
+              continue;
+            }
+            regions.Compute(
+              p, cells, count,
+              [&](vtkIdType f, auto&& fn)
+              {
+                forCorners(offsets, conn, f, p,
+                  [&](vtkIdType, vtkIdType previous, vtkIdType next) { fn(previous, next); });
+              },
+              directed, smooth);
+            copies[static_cast<std::size_t>(p) + 1] = std::max<vtkIdType>(regions.Regions - 1, 0);
+            for (vtkIdType j = 0; j < count; ++j)
+            {
+              linkLabel[first + static_cast<std::size_t>(j)] = regions.LabelOf(cells[j]);
+            }
+          }
+        });
+    });
+
+  // Copies are numbered point by point: copy (p, r) is numPoints + start[p] + r - 1.
+  std::partial_sum(copies.begin(), copies.end(), copies.begin());
+  SplitPolygons result;
+  const vtkIdType numCopies = copies.back();
+  result.CopyOf.resize(static_cast<std::size_t>(numCopies));
+  result.Polys = vtkSmartPointer<vtkCellArray>::New();
+  result.Polys->DeepCopy(polys);
+  if (numCopies == 0)
+  {
+    return result;
+  }
+  if (!result.Polys->IsStorage64Bit() && numPoints + numCopies > VTK_INT_MAX)
+  {
+    result.Polys->ConvertTo64BitStorage();
+  }
+  // Second pass: each point's polygons of region r > 0 refer to its copy r. A corner belongs to
+  // exactly one point, so the writes never meet; corners are found in the input's ids.
+  polys->Visit(RawCells{},
+    [&](const auto* offsets, const auto* conn)
+    {
+      result.Polys->Visit(RawCells{},
+        [&](const auto* outOffsets, auto* outConn)
+        {
+          using Id = std::remove_pointer_t<decltype(outConn)>;
+          phongvtk::For(0, numPoints, numPolys,
+            [&](vtkIdType begin, vtkIdType end)
+            {
+              for (vtkIdType p = begin; p < end; ++p)
+              {
+                const std::size_t at = static_cast<std::size_t>(p);
+                const vtkIdType start = numPoints + copies[at];
+                const vtkIdType added = copies[at + 1] - copies[at];
+                if (added == 0)
+                {
+                  continue;
+                }
+                std::fill_n(result.CopyOf.begin() + (start - numPoints), added, p);
+                const vtkIdType count = links.GetNumberOfCells(p);
+                const vtkIdType* cells = links.GetCells(p);
+                const std::size_t first = static_cast<std::size_t>(links.GetOffset(p));
+                for (vtkIdType j = 0; j < count; ++j)
+                {
+                  const std::int32_t label = linkLabel[first + static_cast<std::size_t>(j)];
+                  if (label == 0)
+                  {
+                    continue;
+                  }
+                  const vtkIdType f = cells[j];
+                  forCorners(offsets, conn, f, p,
+                    [&](vtkIdType k, vtkIdType, vtkIdType)
+                    { outConn[outOffsets[f] + k] = static_cast<Id>(start + label - 1); });
+                }
+              }
+            });
+        });
+    });
+  return result;
+}
+
+/**
+ * The mesh after splitting: `input` with the copies appended to its points (every point array
+ * copied to them, as VTK copies point data, every attribute included), its polygons replaced by
+ * the split ones, and, with `originalIds`, the point array `OriginalPointIds`. Everything else is
+ * shared with `input`.
+ */
+inline vtkSmartPointer<vtkPolyData> MeshWithCopies(
+  vtkPolyData* input, const SplitPolygons& split, bool originalIds)
+{
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(input);
+  const vtkIdType n = input->GetNumberOfPoints();
+  const auto m = static_cast<vtkIdType>(split.CopyOf.size());
+  if (m > 0)
+  {
+    vtkNew<vtkIdList> from, to;
+    from->SetNumberOfIds(m);
+    to->SetNumberOfIds(m);
+    for (vtkIdType i = 0; i < m; ++i)
+    {
+      from->SetId(i, split.CopyOf[static_cast<std::size_t>(i)]);
+      to->SetId(i, n + i);
+    }
+    vtkDataArray* source = input->GetPoints()->GetData();
+    vtkNew<vtkPoints> points;
+    points->SetDataType(source->GetDataType());
+    points->SetNumberOfPoints(n + m);
+    points->GetData()->InsertTuples(0, n, 0, source);
+    points->GetData()->InsertTuples(to, from, source);
+    out->SetPoints(points);
+    vtkNew<vtkPointData> pointData;
+    pointData->CopyAllOn();
+    pointData->CopyAllocate(input->GetPointData(), n + m);
+    pointData->CopyData(input->GetPointData(), 0, n, 0);
+    pointData->CopyData(input->GetPointData(), from, to);
+    out->GetPointData()->ShallowCopy(pointData);
+    out->SetPolys(split.Polys);
+  }
+  if (originalIds)
+  {
+    vtkNew<vtkIdTypeArray> ids;
+    ids->SetName("OriginalPointIds");
+    ids->SetNumberOfTuples(n + m);
+    vtkIdType* id = ids->GetPointer(0);
+    std::iota(id, id + n, vtkIdType(0));
+    std::copy(split.CopyOf.begin(), split.CopyOf.end(), id + n);
+    out->GetPointData()->AddArray(ids);
+  }
+  return out;
+}
+
+} // namespace phongvtk
+
+#endif
+// VTK-HeaderTest-Exclude: PhongVTKSplitting.h

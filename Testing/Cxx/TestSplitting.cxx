@@ -1,0 +1,822 @@
+// Feature-angle splitting of vtkPolygonNormals: the regions around a point (PhongVTKSplitting.h),
+// the sharp-edge decision (PhongVTKFeatureAngle.h) against exact rational arithmetic, and the
+// filter's output (copies, OriginalPointIds, pass-through) against hand-counted meshes and
+// VTK's own vtkPolyDataNormals where its float test cannot be fooled.
+#include "PhongVTKExactReference.h"
+#include "PhongVTKFeatureAngle.h"
+#include "PhongVTKFilterTestSupport.h"
+#include "PhongVTKOFFReader.h"
+#include "PhongVTKSplitting.h"
+#include "vtkPolygonNormals.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
+#include "vtkStringArray.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace
+{
+using phongvtk_test::Cell;
+using phongvtk_test::Cells;
+using phongvtk_test::MakePolyData;
+using phongvtk_test::MessageObserver;
+using phongvtk_test::Point;
+
+constexpr int Modes[] = { vtkPolygonNormals::FAST, vtkPolygonNormals::DOUBLE,
+  vtkPolygonNormals::COMPENSATED, vtkPolygonNormals::EXACT };
+
+const char* ModeName(int mode)
+{
+  static const char* const names[] = { "FAST", "DOUBLE", "COMPENSATED", "EXACT" };
+  return names[mode];
+}
+
+/// The filter with point normals and splitting on, then `configure`; no error expected.
+vtkSmartPointer<vtkPolyData> Split(vtkPolyData* input, int mode = vtkPolygonNormals::DOUBLE,
+  double angle = 30.0, const std::function<void(vtkPolygonNormals*)>& configure = {})
+{
+  vtkNew<vtkPolygonNormals> filter;
+  vtkNew<MessageObserver> messages;
+  messages->Watch(filter);
+  filter->SetAccuracy(mode);
+  filter->ComputePointNormalsOn();
+  filter->SplittingOn();
+  filter->SetFeatureAngle(angle);
+  if (configure)
+  {
+    configure(filter);
+  }
+  filter->SetInputData(input);
+  filter->Update();
+  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors.front();
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->ShallowCopy(filter->GetOutput());
+  return output;
+}
+
+/// vtkPolyDataNormals' point count with splitting alone (no consistency, no orientation).
+vtkIdType VTKSplitPointCount(vtkPolyData* input, double angle = 30.0)
+{
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(input);
+  normals->SplittingOn();
+  normals->ConsistencyOff();
+  normals->AutoOrientNormalsOff();
+  normals->SetFeatureAngle(angle);
+  normals->Update();
+  return normals->GetOutput()->GetNumberOfPoints();
+}
+
+/// The unit cube as six quads, outward.
+vtkSmartPointer<vtkPolyData> Cube(double offset = 0.0)
+{
+  std::vector<Point> p;
+  for (int i = 0; i < 8; ++i)
+  {
+    p.push_back({ offset + (i & 1), offset + ((i >> 1) & 1), offset + ((i >> 2) & 1) });
+  }
+  Cells cells;
+  cells.Polys = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 },
+    { 1, 3, 7, 5 } };
+  return MakePolyData(p, cells);
+}
+
+/// A flat n x n grid of squares, each split into two triangles.
+vtkSmartPointer<vtkPolyData> FlatGrid(int n)
+{
+  std::vector<Point> p;
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      p.push_back({ double(i), double(j), 0.0 });
+    }
+  }
+  Cells cells;
+  auto id = [n](int i, int j)
+  {
+    return vtkIdType(j * (n + 1) + i);
+  };
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      cells.Polys.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1) });
+      cells.Polys.push_back({ id(i, j), id(i + 1, j + 1), id(i, j + 1) });
+    }
+  }
+  return MakePolyData(p, cells);
+}
+
+/// A sphere whose points are moved radially at random: many edges either side of 30 degrees.
+vtkSmartPointer<vtkPolyData> RoughSphere(int resolution, double roughness, unsigned seed = 11)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(resolution);
+  source->SetPhiResolution(resolution);
+  source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  source->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->DeepCopy(source->GetOutput());
+  mesh->GetPointData()->Initialize();
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(1.0 - roughness, 1.0 + roughness);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    mesh->GetPoint(i, x);
+    const double s = uniform(random);
+    mesh->GetPoints()->SetPoint(i, s * x[0], s * x[1], s * x[2]);
+  }
+  return mesh;
+}
+
+/// The polygons' point ids of a mesh.
+std::vector<Cell> PolygonsOf(vtkPolyData* mesh)
+{
+  std::vector<Cell> polys;
+  vtkCellArray* cells = mesh->GetPolys();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+  {
+    cells->GetCellAtId(c, ids);
+    polys.emplace_back(ids->begin(), ids->end());
+  }
+  return polys;
+}
+
+/**
+ * How the corners of each input point are grouped: for every input point, the set of groups of
+ * (input polygon, corner) that share an output point. `polygonOf[i]` is the input polygon of
+ * output polygon i.
+ */
+using Grouping = std::map<vtkIdType, std::set<std::set<std::pair<vtkIdType, vtkIdType>>>>;
+Grouping CornerGroups(vtkPolyData* out, const std::vector<vtkIdType>& polygonOf)
+{
+  auto* original = vtkIdTypeArray::SafeDownCast(out->GetPointData()->GetArray("OriginalPointIds"));
+  EXPECT_NE(original, nullptr);
+  std::map<vtkIdType, std::set<std::pair<vtkIdType, vtkIdType>>> byOutputPoint;
+  const std::vector<Cell> polys = PolygonsOf(out);
+  for (std::size_t i = 0; i < polys.size(); ++i)
+  {
+    for (std::size_t k = 0; k < polys[i].size(); ++k)
+    {
+      byOutputPoint[polys[i][k]].insert({ polygonOf[i], vtkIdType(k) });
+    }
+  }
+  Grouping groups;
+  for (const auto& entry : byOutputPoint)
+  {
+    groups[original->GetValue(entry.first)].insert(entry.second);
+  }
+  return groups;
+}
+
+//------------------------------------------------------------------------------
+// The exact truth of a feature edge, written from the definition with rationals.
+
+/// Whether w1.w2 <= c |w1| |w2| for the exact area vectors of two polygons.
+bool ReferenceSharp(const std::vector<Point>& a, const std::vector<Point>& b, double c)
+{
+  const phongvtk_test::ExactAreaVector w1 = phongvtk_test::ComputeExactAreaVector(a);
+  const phongvtk_test::ExactAreaVector w2 = phongvtk_test::ComputeExactAreaVector(b);
+  mpq_class dot = 0, n1 = 0, n2 = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    dot += w1.W[k] * w2.W[k];
+    n1 += w1.W[k] * w1.W[k];
+    n2 += w2.W[k] * w2.W[k];
+  }
+  if (n1 == 0 || n2 == 0)
+  {
+    return true;
+  }
+  // dot <= c sqrt(n1 n2): compare signs first, then squares.
+  const mpq_class cq(c);
+  const mpq_class rhsSquared = cq * cq * n1 * n2;
+  if (c >= 0)
+  {
+    return dot <= 0 || dot * dot <= rhsSquared;
+  }
+  return dot < 0 && dot * dot >= rhsSquared;
+}
+
+/**
+ * Two triangles hinged on the edge (o, o, o)-(o + 1, o, o): the first flat in z = o, the second
+ * rising to the apex (o + 0.5, apexY, apexZ) (absolute coordinates). With apexY = o + y and
+ * apexZ = o + z the angle between their area vectors has the cosine y / sqrt(y^2 + z^2).
+ */
+vtkSmartPointer<vtkPolyData> Hinge(double o, double apexY, double apexZ,
+  std::vector<Point>* t1 = nullptr, std::vector<Point>* t2 = nullptr)
+{
+  const std::vector<Point> p = { { o, o, o }, { o + 1, o, o }, { o + 0.5, o - 1, o },
+    { o + 0.5, apexY, apexZ } };
+  if (t1 && t2)
+  {
+    *t1 = { p[0], p[1], p[2] };
+    *t2 = { p[1], p[0], p[3] };
+  }
+  Cells cells;
+  cells.Polys = { { 0, 1, 2 }, { 1, 0, 3 } };
+  return MakePolyData(p, cells);
+}
+
+std::vector<double> Flat(const std::vector<Point>& polygon)
+{
+  std::vector<double> xyz;
+  for (const Point& p : polygon)
+  {
+    xyz.insert(xyz.end(), p.begin(), p.end());
+  }
+  return xyz;
+}
+} // namespace
+
+//==============================================================================
+// The regions around one point
+
+TEST(SplittingRegions, AFanSplitsAtItsSharpEdgesOnly)
+{
+  // Point 0 with a closed fan of six triangles 0-(k)-(k+1); edges to 1 and 4 are sharp.
+  std::vector<std::array<vtkIdType, 3>> tris;
+  for (vtkIdType k = 0; k < 6; ++k)
+  {
+    tris.push_back({ 0, 1 + k, 1 + (k + 1) % 6 });
+  }
+  const std::vector<vtkIdType> cells = { 0, 1, 2, 3, 4, 5 };
+  auto corners = [&](vtkIdType f, auto&& fn)
+  {
+    fn(tris[f][2], tris[f][1]);
+  };
+  auto directed = [](vtkIdType)
+  {
+    return true;
+  };
+  // Triangles f and f + 1 share the edge 0-(f + 2); sharp at 0-1 (between 5 and 0) and 0-4
+  // (between 2 and 3).
+  auto smooth = [](vtkIdType a, vtkIdType b)
+  {
+    const vtkIdType lo = std::min(a, b), hi = std::max(a, b);
+    return !((lo == 0 && hi == 5) || (lo == 2 && hi == 3));
+  };
+  phongvtk::PointRegions regions;
+  regions.Compute(0, cells.data(), 6, corners, directed, smooth);
+  EXPECT_EQ(regions.Regions, 2);
+  EXPECT_EQ(regions.LabelOf(0), 0);
+  EXPECT_EQ(regions.LabelOf(1), 0);
+  EXPECT_EQ(regions.LabelOf(2), 0);
+  EXPECT_EQ(regions.LabelOf(3), 1);
+  EXPECT_EQ(regions.LabelOf(4), 1);
+  EXPECT_EQ(regions.LabelOf(5), 1);
+}
+
+TEST(SplittingRegions, NonManifoldEdgesAndUndirectedPolygonsJoinNothing)
+{
+  // Three triangles share the edge 0-1 (a fin); a fourth, without direction, shares 0-2 with the
+  // first. Every edge is smooth, yet nothing is joined: regions {0}, {1}, {2}; the undirected
+  // polygon keeps the point (label 0) and adds no region.
+  const std::vector<std::array<vtkIdType, 2>> neighbours = { { 1, 2 }, { 1, 3 }, { 1, 4 },
+    { 2, 5 } };
+  const std::vector<vtkIdType> cells = { 3, 2, 1, 0, 0 }; // unsorted, one listed twice
+  auto corners = [&](vtkIdType f, auto&& fn)
+  {
+    fn(neighbours[f][0], neighbours[f][1]);
+  };
+  auto directed = [](vtkIdType f)
+  {
+    return f != 3;
+  };
+  auto smooth = [](vtkIdType, vtkIdType)
+  {
+    return true;
+  };
+  phongvtk::PointRegions regions;
+  regions.Compute(0, cells.data(), 5, corners, directed, smooth);
+  EXPECT_EQ(regions.Regions, 3);
+  EXPECT_EQ(regions.LabelOf(0), 0);
+  EXPECT_EQ(regions.LabelOf(1), 1);
+  EXPECT_EQ(regions.LabelOf(2), 2);
+  EXPECT_EQ(regions.LabelOf(3), 0);
+}
+
+TEST(SplittingRegions, RegionsAreNumberedByTheirSmallestPolygon)
+{
+  // Two smooth pairs {7, 9} and {3, 8} around point 0, listed in any order: {3, 8} keeps it.
+  const std::map<vtkIdType, std::array<vtkIdType, 2>> neighbours = { { 7, { 1, 2 } },
+    { 9, { 2, 3 } }, { 3, { 4, 5 } }, { 8, { 5, 6 } } };
+  auto corners = [&](vtkIdType f, auto&& fn)
+  {
+    fn(neighbours.at(f)[0], neighbours.at(f)[1]);
+  };
+  auto directed = [](vtkIdType)
+  {
+    return true;
+  };
+  auto smooth = [](vtkIdType, vtkIdType)
+  {
+    return true;
+  };
+  for (const std::vector<vtkIdType>& cells :
+    { std::vector<vtkIdType>{ 7, 9, 3, 8 }, std::vector<vtkIdType>{ 8, 3, 9, 7 } })
+  {
+    phongvtk::PointRegions regions;
+    regions.Compute(0, cells.data(), 4, corners, directed, smooth);
+    EXPECT_EQ(regions.Regions, 2);
+    EXPECT_EQ(regions.LabelOf(3), 0);
+    EXPECT_EQ(regions.LabelOf(8), 0);
+    EXPECT_EQ(regions.LabelOf(7), 1);
+    EXPECT_EQ(regions.LabelOf(9), 1);
+  }
+}
+
+//==============================================================================
+// The sharp-edge decision against exact rational arithmetic
+
+TEST(FeatureAngleDecision, ExactIsRightOneUlpEitherSideOfTheThresholdAtEveryOffset)
+{
+  // 30 degrees (apex above the first triangle's far side) and 135 degrees (folded back over it).
+  struct Threshold
+  {
+    double Degrees, Y, Z;
+  };
+  for (const Threshold& t : { Threshold{ 30.0, 1.0, std::tan(vtkMath::RadiansFromDegrees(30.0)) },
+         Threshold{ 135.0, -1.0, 1.0 } })
+  {
+    const double c = std::cos(vtkMath::RadiansFromDegrees(t.Degrees));
+    for (double offset : { 0.0, 1.0, 1e4, 1e8, -3e7 })
+    {
+      int sharp = 0, smooth = 0;
+      // The apex height one representable step at a time around the threshold.
+      double z = offset + t.Z;
+      for (int k = 0; k < 12; ++k)
+      {
+        z = std::nextafter(z, -HUGE_VAL);
+      }
+      for (int k = -12; k <= 12; ++k, z = std::nextafter(z, HUGE_VAL))
+      {
+        std::vector<Point> t1, t2;
+        auto mesh = Hinge(offset, offset + t.Y, z, &t1, &t2);
+        const bool expected = ReferenceSharp(t1, t2, c);
+        (expected ? sharp : smooth)++;
+        const std::string where = std::to_string(t.Degrees) + " degrees, offset " +
+          std::to_string(offset) + ", step " + std::to_string(k);
+        EXPECT_EQ(
+          phongvtk::detail::ExactFeatureEdgeIsSharp(Flat(t1).data(), 3, Flat(t2).data(), 3, c),
+          expected)
+          << where;
+        // The filter in EXACT: the two shared points split (6 points) exactly when sharp.
+        EXPECT_EQ(
+          Split(mesh, vtkPolygonNormals::EXACT, t.Degrees)->GetNumberOfPoints(), expected ? 6 : 4)
+          << where;
+      }
+      EXPECT_GT(sharp, 0) << t.Degrees << " offset " << offset;
+      EXPECT_GT(smooth, 0) << t.Degrees << " offset " << offset
+                           << ": the steps must straddle the threshold";
+    }
+  }
+}
+
+TEST(FeatureAngleDecision, VTKsFloatTestMisjudgesEdgesNearTheThreshold)
+{
+  // The same hinges: vtkPolyDataNormals (float normals, float dot product) decides a band of
+  // about 1e-7 around cos(30 degrees) by rounding, so some of these edges come out wrong.
+  const double c = std::cos(vtkMath::RadiansFromDegrees(30.0));
+  const double z0 = std::tan(vtkMath::RadiansFromDegrees(30.0));
+  int vtkWrong = 0, exactWrong = 0, cases = 0;
+  for (int k = -40; k <= 40; ++k)
+  {
+    const double z = z0 + k * 2e-9;
+    std::vector<Point> t1, t2;
+    auto mesh = Hinge(0.0, 1.0, z, &t1, &t2);
+    const bool sharp = ReferenceSharp(t1, t2, c);
+    const vtkIdType expected = sharp ? 6 : 4;
+    vtkWrong += VTKSplitPointCount(mesh) != expected;
+    exactWrong += Split(mesh, vtkPolygonNormals::EXACT)->GetNumberOfPoints() != expected;
+    ++cases;
+  }
+  EXPECT_EQ(exactWrong, 0);
+  EXPECT_GT(vtkWrong, 0) << "VTK's float decision was right on all " << cases << " hinges";
+}
+
+TEST(FeatureAngleDecision, CertifiedStageDecidesOnlyWhereTheBoundAllows)
+{
+  const double c = std::cos(vtkMath::RadiansFromDegrees(30.0));
+  const double n1[3] = { 0.0, 0.0, 1.0 };
+  // n2 at angle t from n1: n1.n2 = cos t.
+  auto at = [&](double cosine)
+  {
+    const double n2[3] = { 0.0, std::sqrt(1.0 - cosine * cosine), cosine };
+    return phongvtk::CertifiedFeatureEdge(n1, n2, c);
+  };
+  EXPECT_EQ(at(c + 1e-12), phongvtk::FeatureEdge::Smooth);
+  EXPECT_EQ(at(c - 1e-12), phongvtk::FeatureEdge::Sharp);
+  EXPECT_EQ(at(c), phongvtk::FeatureEdge::Undecided);
+  EXPECT_EQ(at(std::nextafter(c, 2.0)), phongvtk::FeatureEdge::Undecided);
+  // The inexact modes decide everything, an edge exactly at the angle as sharp.
+  const double n2[3] = { 0.0, std::sqrt(1.0 - c * c), c };
+  EXPECT_EQ(phongvtk::FeatureEdgeFromNormals(n1, n2, phongvtk::UnitDot(n1, n2)),
+    phongvtk::FeatureEdge::Sharp);
+}
+
+TEST(FeatureAngleDecision, RandomPolygonPairsNearTheAngleAgreeWithRationals)
+{
+  // Quads and triangles sharing nothing in particular, with angles drawn around several
+  // feature angles (obtuse ones too) and coordinates over many binades.
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int checked = 0;
+  for (double degrees : { 0.0, 1e-6, 30.0, 89.999, 90.0, 135.0, 179.9, 180.0 })
+  {
+    const double c = std::cos(vtkMath::RadiansFromDegrees(degrees));
+    for (int trial = 0; trial < 200; ++trial)
+    {
+      const double scale = std::ldexp(1.0, static_cast<int>(unit(random) * 300));
+      std::vector<Point> a, b;
+      for (int v = 0; v < 3 + trial % 2; ++v)
+      {
+        a.push_back({ scale * unit(random), scale * unit(random), scale * unit(random) });
+      }
+      // b: a's first edge and a point placed at about the feature angle, then nudged.
+      b = { a[1], a[0] };
+      const double t = vtkMath::RadiansFromDegrees(degrees) + 1e-15 * unit(random);
+      const double w = std::tan(t) * scale;
+      b.push_back({ a[2][0] + w * unit(random), a[2][1], a[2][2] + w * unit(random) });
+      const bool expected = ReferenceSharp(a, b, c);
+      ASSERT_EQ(phongvtk::detail::ExactFeatureEdgeIsSharp(
+                  Flat(a).data(), static_cast<std::int64_t>(a.size()), Flat(b).data(), 3, c),
+        expected)
+        << degrees << " degrees, trial " << trial;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 1600);
+}
+
+//==============================================================================
+// The filter's output
+
+TEST(Splitting, CubeGetsThreeCopiesOfEveryCornerAndAxisAlignedNormals)
+{
+  for (double offset : { 0.0, 1e8 })
+  {
+    auto cube = Cube(offset);
+    for (int mode : Modes)
+    {
+      auto out = Split(cube, mode);
+      ASSERT_EQ(out->GetNumberOfPoints(), 24) << ModeName(mode);
+      ASSERT_EQ(VTKSplitPointCount(cube), 24);
+      vtkDataArray* normals = out->GetPointData()->GetNormals();
+      ASSERT_NE(normals, nullptr);
+      auto* original =
+        vtkIdTypeArray::SafeDownCast(out->GetPointData()->GetArray("OriginalPointIds"));
+      ASSERT_NE(original, nullptr);
+      std::vector<int> copies(8, 0);
+      for (vtkIdType i = 0; i < 24; ++i)
+      {
+        double n[3];
+        normals->GetTuple(i, n);
+        const double sorted[3] = { std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2]) };
+        EXPECT_EQ(*std::max_element(sorted, sorted + 3), 1.0) << ModeName(mode) << " point " << i;
+        EXPECT_EQ(sorted[0] + sorted[1] + sorted[2], 1.0) << ModeName(mode) << " point " << i;
+        const vtkIdType from = original->GetValue(i);
+        ASSERT_GE(from, 0);
+        ASSERT_LT(from, 8);
+        copies[from]++;
+        double p[3], q[3];
+        out->GetPoint(i, p);
+        cube->GetPoint(from, q);
+        EXPECT_TRUE(p[0] == q[0] && p[1] == q[1] && p[2] == q[2]);
+        EXPECT_EQ(i < 8, i == from) << "input points keep their ids";
+      }
+      EXPECT_EQ(copies, std::vector<int>(8, 3));
+      // Every face's corners now carry its own normal.
+      vtkDataArray* cellNormals = out->GetCellData()->GetNormals();
+      const std::vector<Cell> polys = PolygonsOf(out);
+      for (std::size_t f = 0; f < polys.size(); ++f)
+      {
+        double nf[3];
+        cellNormals->GetTuple(static_cast<vtkIdType>(f), nf);
+        for (vtkIdType id : polys[f])
+        {
+          double n[3];
+          normals->GetTuple(id, n);
+          EXPECT_TRUE(n[0] == nf[0] && n[1] == nf[1] && n[2] == nf[2]);
+        }
+      }
+    }
+  }
+}
+
+TEST(Splitting, OffByDefaultAndOnlyWithPointNormals)
+{
+  auto cube = Cube();
+  vtkNew<vtkPolygonNormals> f;
+  EXPECT_FALSE(f->GetSplitting());
+  EXPECT_EQ(f->GetFeatureAngle(), 30.0);
+  EXPECT_TRUE(f->GetComputeOriginalPointIds());
+  f->SetFeatureAngle(-5.0);
+  EXPECT_EQ(f->GetFeatureAngle(), 0.0);
+  f->SetFeatureAngle(200.0);
+  EXPECT_EQ(f->GetFeatureAngle(), 180.0);
+  f->SetFeatureAngle(30.0);
+  f->ComputePointNormalsOn();
+  f->SetInputData(cube);
+  f->Update();
+  EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 8);
+  EXPECT_EQ(f->GetOutput()->GetPointData()->GetArray("OriginalPointIds"), nullptr);
+  // Splitting without point normals changes nothing: nothing depends on it.
+  auto out = Split(cube, vtkPolygonNormals::DOUBLE, 30.0,
+    [](vtkPolygonNormals* filter) { filter->ComputePointNormalsOff(); });
+  EXPECT_EQ(out->GetNumberOfPoints(), 8);
+  EXPECT_EQ(out->GetPointData()->GetArray("OriginalPointIds"), nullptr);
+  EXPECT_EQ(out->GetPolys(), cube->GetPolys());
+  // Without OriginalPointIds the copies are made all the same.
+  out = Split(cube, vtkPolygonNormals::DOUBLE, 30.0,
+    [](vtkPolygonNormals* filter) { filter->ComputeOriginalPointIdsOff(); });
+  EXPECT_EQ(out->GetNumberOfPoints(), 24);
+  EXPECT_EQ(out->GetPointData()->GetArray("OriginalPointIds"), nullptr);
+}
+
+TEST(Splitting, FeatureAngleZeroSplitsEveryEdgeAnd180OnlyFoldedOnes)
+{
+  auto grid = FlatGrid(4); // 25 points, 32 triangles, 3 * 32 corners
+  // 0 degrees: c = 1 and every w1.w2 <= |w1| |w2|: every corner its own point.
+  EXPECT_EQ(Split(grid, vtkPolygonNormals::EXACT, 0.0)->GetNumberOfPoints(), 96);
+  EXPECT_EQ(VTKSplitPointCount(grid, 0.0), 96);
+  // A flat grid is smooth at any positive angle.
+  EXPECT_EQ(Split(grid, vtkPolygonNormals::EXACT, 1e-6)->GetNumberOfPoints(), 25);
+  // 180 degrees: only faces folded back onto each other split; a cube's 90 degree edges do not.
+  EXPECT_EQ(Split(Cube(), vtkPolygonNormals::EXACT, 180.0)->GetNumberOfPoints(), 8);
+  EXPECT_EQ(Split(Cube(), vtkPolygonNormals::EXACT, 90.0)->GetNumberOfPoints(), 24);
+  EXPECT_EQ(Split(Cube(), vtkPolygonNormals::EXACT, 90.0001)->GetNumberOfPoints(), 8);
+  // Two triangles folded flat onto each other (opposite area vectors): sharp even at 180.
+  const std::vector<Point> p = { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 1, 0 }, { 0.5, 2, 0 } };
+  Cells folded;
+  folded.Polys = { { 0, 1, 2 }, { 1, 0, 3 } };
+  auto fold = MakePolyData(p, folded);
+  EXPECT_EQ(Split(fold, vtkPolygonNormals::EXACT, 180.0)->GetNumberOfPoints(), 6);
+}
+
+TEST(Splitting, BoundaryNonManifoldAndUndirectedPolygonsSeparateAsInVTK)
+{
+  // A fin: three triangles on the edge 0-1, coplanar pairs included (smooth at 30 degrees),
+  // yet the non-manifold edge separates all three at both its points.
+  const std::vector<Point> p = { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 1, 0 }, { 0.5, -1, 0 },
+    { 0.5, 0, 1 }, { 2, 1, 0 }, { 2, -1, 0 } };
+  Cells fin;
+  fin.Polys = { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } };
+  auto finMesh = MakePolyData(p, fin);
+  EXPECT_EQ(Split(finMesh, vtkPolygonNormals::EXACT)->GetNumberOfPoints(), 7 + 2 + 2);
+  EXPECT_EQ(VTKSplitPointCount(finMesh), 11);
+  // A bow tie: two triangles touching at one point only, coplanar: no shared edge joins them.
+  Cells bowtie;
+  bowtie.Polys = { { 1, 2, 5 }, { 1, 6, 3 } };
+  auto bowtieMesh = MakePolyData(p, bowtie);
+  EXPECT_EQ(Split(bowtieMesh, vtkPolygonNormals::EXACT)->GetNumberOfPoints(), 8);
+  // A zero-area triangle between two coplanar ones keeps its points and bridges nothing: the
+  // two real triangles share no edge, so point 1 splits once; the sliver adds no copy.
+  const std::vector<Point> q = { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 }, { 1, 1, 0 }, { 1, -1, 0 } };
+  Cells sliver;
+  sliver.Polys = { { 0, 1, 3 }, { 0, 2, 1 }, { 1, 2, 4 } };
+  auto out = Split(MakePolyData(q, sliver), vtkPolygonNormals::EXACT);
+  EXPECT_EQ(out->GetNumberOfPoints(), 6);
+  const std::vector<Cell> polys = PolygonsOf(out);
+  EXPECT_EQ(polys[1], (Cell{ 0, 2, 1 })) << "the sliver keeps the input points";
+}
+
+TEST(Splitting, PointArraysAreCopiedAndEverythingElsePasses)
+{
+  auto cube = Cube();
+  // Lines and vertices on the cube's points, and arrays of every kind.
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType line[2] = { 0, 7 };
+  lines->InsertNextCell(2, line);
+  cube->SetLines(lines);
+  vtkNew<vtkCellArray> verts;
+  const vtkIdType vert[1] = { 3 };
+  verts->InsertNextCell(1, vert);
+  cube->SetVerts(verts);
+  vtkNew<vtkDoubleArray> scalars;
+  scalars->SetName("temperature");
+  scalars->SetNumberOfComponents(2);
+  vtkNew<vtkStringArray> labels;
+  labels->SetName("label");
+  vtkNew<vtkIntArray> cellIds;
+  cellIds->SetName("cell id");
+  for (vtkIdType i = 0; i < 8; ++i)
+  {
+    scalars->InsertNextTuple2(i * 1.5, -double(i));
+    labels->InsertNextValue("corner " + std::to_string(i));
+  }
+  for (vtkIdType i = 0; i < cube->GetNumberOfCells(); ++i)
+  {
+    cellIds->InsertNextValue(int(100 + i));
+  }
+  cube->GetPointData()->SetScalars(scalars);
+  cube->GetPointData()->AddArray(labels);
+  cube->GetCellData()->AddArray(cellIds);
+  vtkNew<vtkIntArray> field;
+  field->SetName("run");
+  field->InsertNextValue(42);
+  cube->GetFieldData()->AddArray(field);
+
+  auto out = Split(cube, vtkPolygonNormals::EXACT);
+  ASSERT_EQ(out->GetNumberOfPoints(), 24);
+  auto* original = vtkIdTypeArray::SafeDownCast(out->GetPointData()->GetArray("OriginalPointIds"));
+  ASSERT_NE(original, nullptr);
+  auto* outScalars = vtkDoubleArray::SafeDownCast(out->GetPointData()->GetScalars());
+  auto* outLabels = vtkStringArray::SafeDownCast(out->GetPointData()->GetAbstractArray("label"));
+  ASSERT_NE(outScalars, nullptr);
+  ASSERT_NE(outLabels, nullptr);
+  ASSERT_EQ(outScalars->GetNumberOfTuples(), 24);
+  for (vtkIdType i = 0; i < 24; ++i)
+  {
+    const vtkIdType from = original->GetValue(i);
+    EXPECT_EQ(outScalars->GetComponent(i, 0), scalars->GetComponent(from, 0));
+    EXPECT_EQ(outScalars->GetComponent(i, 1), scalars->GetComponent(from, 1));
+    EXPECT_EQ(outLabels->GetValue(i), labels->GetValue(from));
+  }
+  // Lines and vertices keep their ids; cell and field data pass.
+  EXPECT_EQ(out->GetLines(), lines.GetPointer());
+  EXPECT_EQ(out->GetVerts(), verts.GetPointer());
+  EXPECT_EQ(out->GetCellData()->GetArray("cell id"), cellIds.GetPointer());
+  EXPECT_EQ(out->GetFieldData()->GetArray("run"), field.GetPointer());
+  // The input is untouched.
+  EXPECT_EQ(cube->GetNumberOfPoints(), 8);
+  EXPECT_EQ(cube->GetPointData()->GetArray("OriginalPointIds"), nullptr);
+  EXPECT_EQ(PolygonsOf(cube)[0], (Cell{ 0, 2, 3, 1 }));
+}
+
+TEST(Splitting, StripsKeepTheirPointIds)
+{
+  auto cube = Cube();
+  Cells withStrip;
+  withStrip.Polys = PolygonsOf(cube);
+  withStrip.Strips = { { 0, 1, 2, 3 } }; // lies in the cube's bottom face
+  auto mesh = MakePolyData(phongvtk_test::PointsOf(cube), withStrip);
+  auto out = Split(mesh, vtkPolygonNormals::DOUBLE);
+  EXPECT_EQ(out->GetNumberOfPoints(), 24);
+  vtkNew<vtkIdList> ids;
+  out->GetStrips()->GetCellAtId(0, ids);
+  EXPECT_EQ(Cell(ids->begin(), ids->end()), (Cell{ 0, 1, 2, 3 }));
+}
+
+TEST(Splitting, BadPointIdsAreStillAnErrorNamingTheCell)
+{
+  auto cube = Cube();
+  Cells cells;
+  cells.Polys = PolygonsOf(cube);
+  cells.Polys[4][2] = 8;
+  auto bad = MakePolyData(phongvtk_test::PointsOf(cube), cells);
+  vtkNew<vtkPolygonNormals> f;
+  vtkNew<MessageObserver> messages;
+  messages->Watch(f);
+  f->ComputePointNormalsOn();
+  f->SplittingOn();
+  f->SetInputData(bad);
+  f->Update();
+  ASSERT_EQ(messages->Errors.size(), 1u);
+  EXPECT_NE(
+    messages->Errors[0].find("Cell 4 refers to a point id outside [0, 8)"), std::string::npos)
+    << messages->Errors[0];
+  EXPECT_EQ(f->GetOutput()->GetNumberOfCells(), 0);
+}
+
+TEST(Splitting, RealMeshesSplitAsVTKDoesWhereItsFloatTestCannotBeFooled)
+{
+  if (!phongvtk_test::HaveCGALMeshes())
+  {
+    GTEST_SKIP() << "CGAL's sample meshes are not unpacked";
+  }
+  for (const char* name : { "fandisk.off", "cube_poly.off", "elephant.off", "cross.off" })
+  {
+    std::string error;
+    auto mesh = phongvtk_test::ReadOFF(phongvtk_test::CGALMeshPath(name), &error);
+    ASSERT_NE(mesh, nullptr) << name << ": " << error;
+    const vtkIdType vtk = VTKSplitPointCount(mesh);
+    for (int mode : Modes)
+    {
+      EXPECT_EQ(Split(mesh, mode)->GetNumberOfPoints(), vtk) << name << " " << ModeName(mode);
+    }
+  }
+}
+
+TEST(Splitting, SameOutputForEveryBackendAndThreadCount)
+{
+  auto mesh = RoughSphere(300, 0.03); // 180,000 triangles: the passes run in parallel
+  const std::string original = vtkSMPTools::GetBackend();
+  struct Config
+  {
+    const char* Backend;
+    int Threads;
+  };
+  const Config configs[] = { { "Sequential", 1 }, { "STDThread", 1 }, { "STDThread", 2 },
+    { "STDThread", 4 } };
+  for (int mode : { vtkPolygonNormals::DOUBLE, vtkPolygonNormals::EXACT })
+  {
+    std::vector<vtkSmartPointer<vtkPolyData>> outputs;
+    for (const Config& config : configs)
+    {
+      ASSERT_TRUE(vtkSMPTools::SetBackend(config.Backend));
+      vtkSMPTools::Initialize(config.Threads);
+      outputs.push_back(Split(mesh, mode));
+    }
+    const vtkIdType added = outputs[0]->GetNumberOfPoints() - mesh->GetNumberOfPoints();
+    EXPECT_GT(added, 1000) << "the rough sphere must have sharp edges";
+    EXPECT_LT(added, 3 * mesh->GetNumberOfPolys() - mesh->GetNumberOfPoints()) << "and smooth ones";
+    for (std::size_t k = 1; k < outputs.size(); ++k)
+    {
+      ASSERT_EQ(outputs[k]->GetNumberOfPoints(), outputs[0]->GetNumberOfPoints());
+      EXPECT_EQ(PolygonsOf(outputs[k]), PolygonsOf(outputs[0])) << ModeName(mode) << " " << k;
+      vtkDataArray* a = outputs[0]->GetPointData()->GetNormals();
+      vtkDataArray* b = outputs[k]->GetPointData()->GetNormals();
+      ASSERT_EQ(a->GetDataSize(), b->GetDataSize());
+      EXPECT_EQ(std::memcmp(a->GetVoidPointer(0), b->GetVoidPointer(0),
+                  static_cast<std::size_t>(a->GetDataSize() * a->GetDataTypeSize())),
+        0)
+        << ModeName(mode) << " run " << k;
+    }
+  }
+  vtkSMPTools::SetBackend(original.c_str());
+}
+
+TEST(Splitting, RegionsDoNotDependOnTheCellOrder)
+{
+  auto mesh = RoughSphere(60, 0.05);
+  const std::vector<Cell> polys = PolygonsOf(mesh);
+  std::vector<vtkIdType> order(polys.size());
+  std::iota(order.begin(), order.end(), vtkIdType(0));
+  std::vector<vtkIdType> identity = order;
+  std::shuffle(order.begin(), order.end(), std::mt19937_64(3));
+  Cells shuffled;
+  for (vtkIdType f : order)
+  {
+    shuffled.Polys.push_back(polys[static_cast<std::size_t>(f)]);
+  }
+  auto other = MakePolyData(phongvtk_test::PointsOf(mesh), shuffled);
+  for (int mode : Modes)
+  {
+    auto a = Split(mesh, mode);
+    auto b = Split(other, mode);
+    EXPECT_GT(a->GetNumberOfPoints(), mesh->GetNumberOfPoints());
+    EXPECT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints()) << ModeName(mode);
+    EXPECT_EQ(CornerGroups(a, identity), CornerGroups(b, order)) << ModeName(mode);
+  }
+}
+
+TEST(Splitting, InexactModesDecideFarFromTheOriginAsTheyDocument)
+{
+  // The trade table of the feature decision: on hinges straddling 30 degrees far from the
+  // origin, how many edges each mode decides as EXACT does. EXACT matches rationals (above);
+  // the others may not, but never by more than their normals' error allows: every edge they
+  // misjudge lies within 1e-6 (FAST) or 1e-12 (DOUBLE, COMPENSATED) of the threshold in cosine.
+  const double c = std::cos(vtkMath::RadiansFromDegrees(30.0));
+  const double z0 = std::tan(vtkMath::RadiansFromDegrees(30.0));
+  for (int mode :
+    { vtkPolygonNormals::FAST, vtkPolygonNormals::DOUBLE, vtkPolygonNormals::COMPENSATED })
+  {
+    for (double offset : { 1e3, 1e6 })
+    {
+      for (int k = -20; k <= 20; ++k)
+      {
+        std::vector<Point> t1, t2;
+        auto mesh = Hinge(offset, offset + 1.0, offset + z0 * (1.0 + k * 1e-8), &t1, &t2);
+        const bool sharp = ReferenceSharp(t1, t2, c);
+        const bool modeSharp = Split(mesh, mode)->GetNumberOfPoints() == 6;
+        if (modeSharp != sharp)
+        {
+          const double z = t2[2][2] - offset; // exact: the stored height above the hinge
+          const double cosine = 1.0 / std::sqrt(1.0 + z * z);
+          EXPECT_LT(std::fabs(cosine - c), mode == vtkPolygonNormals::FAST ? 1e-5 : 1e-12)
+            << ModeName(mode) << " offset " << offset << " step " << k;
+        }
+      }
+    }
+  }
+}
