@@ -66,6 +66,14 @@ def finite_float(text):
     return value
 
 
+def feature_angle(text):
+    """An argparse type: an angle in degrees from 0 to 180."""
+    value = finite_float(text)
+    if not 0.0 <= value <= 180.0:
+        raise argparse.ArgumentTypeError(f"not between 0 and 180 degrees: '{text}'")
+    return value
+
+
 def non_negative(text):
     """An argparse type: a finite number >= 0 (a coefficient or a colour component)."""
     value = finite_float(text)
@@ -174,10 +182,34 @@ def add_weighting(parser):
                              "or max (Nelson Max's, exact on a sphere)")
 
 
-def add_scene(parser, size, what="image", zoom=1.0):
+def add_splitting(parser, split=True):
+    """--feature-angle DEG and --no-splitting (of the point normals); with split False (the
+    demo, whose meshes are smooth surfaces sampled coarsely) no splitting unless an angle is
+    given."""
+    if not split:
+        parser.add_argument("--feature-angle", type=feature_angle, default=None, metavar="DEG",
+                            help="split the point normals at edges whose faces meet at this "
+                                 "angle or more (default: no splitting; the demo's meshes are "
+                                 "smooth surfaces, coarsely sampled)")
+        return
+    parser.add_argument("--feature-angle", type=feature_angle, default=30.0, metavar="DEG",
+                        help="split the point normals at edges whose faces meet at this angle "
+                             "or more, so that creases stay sharp under smooth shading "
+                             "(default 30, as ParaView's Generate Surface Normals; 0 to 180)")
+    parser.add_argument("--no-splitting", action="store_true",
+                        help="average the normals across every edge, creases included")
+
+
+def feature_angle_of(args):
+    """The feature angle the options ask for, or None for no splitting."""
+    return None if getattr(args, "no_splitting", False) else args.feature_angle
+
+
+def add_scene(parser, size, what="image", zoom=1.0, split=True):
     """Material, lights, camera, background and window options of render and demo."""
     add_accuracy(parser, "the normals")
     add_weighting(parser)
+    add_splitting(parser, split)
     parser.add_argument("--size", type=positive_int, nargs=2, default=size, metavar=("W", "H"),
                         help=f"{what} size in pixels (default {size[0]} {size[1]})")
     parser.add_argument("--backend", choices=BACKENDS, default="osmesa",
@@ -225,7 +257,8 @@ def scene_from(args):
         derived_ambient=args.derived_ambient,
         view=View(azimuth=args.azimuth, elevation=args.elevation, parallel=args.parallel,
                   zoom=args.zoom),
-        background=tuple(args.background), accuracy=args.accuracy, weighting=args.weighting)
+        background=tuple(args.background), accuracy=args.accuracy, weighting=args.weighting,
+        feature_angle=feature_angle_of(args))
 
 
 def say(args, text):
@@ -264,6 +297,10 @@ def run_normals(args, progress):
     normals.SetComputeAreas(args.areas)
     normals.SetComputeNormalStatus(args.status)
     normals.SetOutputPrecision(PRECISIONS[args.precision])
+    feature_angle = feature_angle_of(args)
+    if feature_angle is not None:
+        normals.SplittingOn()
+        normals.SetFeatureAngle(feature_angle)
     progress.run(normals, "normals", f"cannot compute the normals of '{args.mesh}'")
     output = normals.GetOutput()
     write_mesh(output, args.output, progress)
@@ -558,7 +595,8 @@ def build_parser():
         "render", help="render a mesh to a PNG image",
         description="Render MESH with vtkPhongPolyDataMapper into a PNG image, headless. "
                     "Normals by vtkPolygonNormals: cell normals for flat shading, area-weighted "
-                    "point normals for Gouraud and Phong.")
+                    "point normals for Gouraud and Phong, split at sharp edges "
+                    "(--feature-angle).")
     render.add_argument("mesh", metavar="MESH", help="the mesh file")
     render.add_argument("-o", "--output", required=True, metavar="PNG", help="the image to write")
     render.add_argument("--shading", choices=SHADINGS, default="phong",
@@ -582,6 +620,7 @@ def build_parser():
     normals.add_argument("--no-cell-normals", action="store_true",
                          help="no cell normals (on by default)")
     add_weighting(normals)
+    add_splitting(normals)
     normals.add_argument("--area-vectors", action="store_true",
                          help="the cell array AreaVectors (w/2: its length is the area)")
     normals.add_argument("--areas", action="store_true", help="the cell array Areas")
@@ -666,7 +705,7 @@ def build_parser():
                            "has fewer than 2N)")
     demo.add_argument("--no-table", action="store_true", help="only the picture")
     add_bench_options(demo)
-    add_scene(demo, (400, 400), "panel", zoom=1.4)
+    add_scene(demo, (400, 400), "panel", zoom=1.4, split=False)
     add_common(demo)
     demo.set_defaults(run=run_demo)
     return parser

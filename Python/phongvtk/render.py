@@ -158,7 +158,8 @@ class View:
 class Scene:
     """Everything but the mesh: material, lights (none: :data:`KEY_LIGHT`), the scene's ambient
     light Ia (or `derived_ambient`: vtkPhongPolyDataMapper's SceneAmbient), camera, background,
-    and the accuracy and point weighting of the normals."""
+    and the accuracy, point weighting and feature angle of the normals (`feature_angle` None:
+    no splitting at sharp edges)."""
 
     material: Material = field(default_factory=Material)
     lights: List[Light] = field(default_factory=list)
@@ -168,11 +169,13 @@ class Scene:
     background: RGB = (0.1, 0.1, 0.12)
     accuracy: str = "double"
     weighting: str = "area"
+    feature_angle: Optional[float] = None
 
 
-def normals_filter(mesh, shading, accuracy="double", weighting="area"):
+def normals_filter(mesh, shading, accuracy="double", weighting="area", feature_angle=None):
     """vtkPolygonNormals on `mesh` as `shading` needs them: cell normals for flat, point normals
-    (faces weighted by `weighting`) for Gouraud and Phong."""
+    (faces weighted by `weighting`) for Gouraud and Phong, split at edges sharper than
+    `feature_angle` degrees unless it is None."""
     normals = phongvtk.vtkPolygonNormals()
     normals.SetInputData(mesh)
     normals.SetAccuracy(ACCURACIES[accuracy])
@@ -180,6 +183,9 @@ def normals_filter(mesh, shading, accuracy="double", weighting="area"):
     smooth = shading != "flat"
     normals.SetComputeCellNormals(not smooth)
     normals.SetComputePointNormals(smooth)
+    if feature_angle is not None:
+        normals.SplittingOn()
+        normals.SetFeatureAngle(feature_angle)
     return normals
 
 
@@ -284,7 +290,8 @@ def render_grid(rows, scene, size, backend="osmesa", labels=False, progress=None
         bottom = (len(rows) - 1 - r) / len(rows)
         camera = None
         for index, panel in enumerate(row):
-            normals = normals_filter(panel.mesh, panel.shading, scene.accuracy, scene.weighting)
+            normals = normals_filter(panel.mesh, panel.shading, scene.accuracy, scene.weighting,
+                                     scene.feature_angle)
             progress.run(normals, f"normals ({panel.shading})", "cannot compute the normals")
             actor = shaded_actor(normals.GetOutput(), panel.shading, scene.material)
             actor.GetMapper().SetSceneAmbient(scene.derived_ambient)

@@ -4,7 +4,10 @@ level Polygon Normals asks for; RedistributeDataSet gives none), computes cell a
 normals with the plugin's Polygon Normals, gathers the result on rank 0 and saves, for every cell
 and point that a process owns (not a ghost), its original id and its normal.
 
-    pv_distributed_normals.py PLUGIN MESH.vtp OUTPUT.npz ACCURACY WEIGHTING
+    pv_distributed_normals.py PLUGIN MESH.vtp OUTPUT.npz ACCURACY WEIGHTING SPLITTING
+
+SPLITTING 1 splits the points at sharp edges (30 degrees): a split point's copies carry its
+original id too.
 """
 import sys
 
@@ -14,13 +17,14 @@ from paraview.simple import (ExtractSurface, GhostCellsGenerator, LoadPlugin,
                              RedistributeDataSet, XMLPolyDataReader)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-plugin, mesh, output, accuracy, weighting = sys.argv[1:6]
+plugin, mesh, output, accuracy, weighting, splitting = sys.argv[1:7]
 LoadPlugin(plugin, remote=True, ns=globals())  # adds the plugin's proxies here
 source = XMLPolyDataReader(FileName=[mesh])
 pieces = ExtractSurface(Input=RedistributeDataSet(Input=source))
 ghosts = GhostCellsGenerator(Input=pieces)
 normals = PolygonNormals(Input=ghosts, ComputePointNormals=1, Accuracy=accuracy,
-                         PointWeighting=weighting, OutputPrecision="Double")
+                         PointWeighting=weighting, OutputPrecision="Double",
+                         Splitting=int(splitting))
 gathered = sm.Fetch(normals)
 
 

@@ -152,7 +152,7 @@ def test_distributed_normals_equal_the_serial_ones_bit_for_bit(tmp_path, distrib
                                                                accuracy, weighting):
     script = str(HERE / "pv_distributed_normals.py")
     serial = tmp_path / "serial.npz"
-    run([PVBATCH, script, PLUGIN, str(distributed_mesh), str(serial), accuracy, weighting])
+    run([PVBATCH, script, PLUGIN, str(distributed_mesh), str(serial), accuracy, weighting, "0"])
     reference = np.load(serial)
     n_cells, n_points = 70 * 48 * 2, 70 * 48 + 2
     assert sorted(reference["cell_ids"]) == list(range(n_cells))
@@ -160,7 +160,7 @@ def test_distributed_normals_equal_the_serial_ones_bit_for_bit(tmp_path, distrib
     for ranks in (2, 3):
         result = tmp_path / f"ranks{ranks}.npz"
         log = run([MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks), PVBATCH,
-                   script, PLUGIN, str(distributed_mesh), str(result), accuracy, weighting])
+                   script, PLUGIN, str(distributed_mesh), str(result), accuracy, weighting, "0"])
         assert error_lines(log) == [], "\n".join(error_lines(log))
         got = np.load(result)
         for kind in ("cell", "point"):
@@ -172,6 +172,39 @@ def test_distributed_normals_equal_the_serial_ones_bit_for_bit(tmp_path, distrib
             same = (normals.view(np.int64) == expected[ids].view(np.int64)).all(axis=1)
             assert same.all(), (f"{ranks} ranks: {(~same).sum()} {kind} normals differ from "
                                 f"the serial run, e.g. id {ids[~same][:5]}")
+
+
+def id_normal_pairs(ids, normals):
+    """The set of (original point id, the normal's bits) pairs."""
+    bits = normals.view(np.int64)
+    return {(int(i), tuple(b)) for i, b in zip(ids.tolist(), bits.tolist())}
+
+
+@pytest.mark.skipif(not MPIEXEC, reason="no mpiexec")
+@pytest.mark.parametrize("accuracy", ["Double", "Exact"])
+def test_distributed_splitting_gives_the_serial_regions_and_normals(tmp_path, distributed_mesh,
+                                                                    accuracy):
+    """Split at 30 degrees, each piece with the ghost layer the filter asks for: every point
+    region of the serial run, identified by the original id and the normal of its point, is
+    found in the pieces, and nothing else is. (Which region of a point keeps the point and which
+    get copies depends on the cell numbering, which differs between pieces.)"""
+    script = str(HERE / "pv_distributed_normals.py")
+    serial = tmp_path / "serial.npz"
+    run([PVBATCH, script, PLUGIN, str(distributed_mesh), str(serial), accuracy, "Area", "1"])
+    reference = np.load(serial)
+    expected = id_normal_pairs(reference["point_ids"], reference["point_normals"])
+    n_points = 70 * 48 + 2
+    assert len(expected) > n_points, "the mesh must have sharp edges at 30 degrees"
+    assert len(reference["point_ids"]) == len(expected)
+    for ranks in (2, 3):
+        result = tmp_path / f"ranks{ranks}.npz"
+        log = run([MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks), PVBATCH,
+                   script, PLUGIN, str(distributed_mesh), str(result), accuracy, "Area", "1"])
+        assert error_lines(log) == [], "\n".join(error_lines(log))
+        got = np.load(result)
+        pairs = id_normal_pairs(got["point_ids"], got["point_normals"])
+        assert pairs - expected == set(), (ranks, sorted(pairs - expected)[:3])
+        assert expected - pairs == set(), (ranks, sorted(expected - pairs)[:3])
 
 
 def test_presets_look_sensible_in_paraviews_light_kit(tmp_path):

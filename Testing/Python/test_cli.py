@@ -316,7 +316,7 @@ def test_normals_of_a_cube_are_the_axes(phongvtk_cli, cube_ply, tmp_path):
 
 def test_normals_options_turn_arrays_off_and_on(phongvtk_cli, cube_ply, tmp_path):
     result = phongvtk_cli("normals", cube_ply, "-o", "points.vtp", "--no-cell-normals",
-                          "--point-normals", "--weighting", "angle")
+                          "--point-normals", "--weighting", "angle", "--no-splitting")
     assert result.returncode == 0, result.stderr
     mesh = read_vtp(tmp_path / "points.vtp")
     assert mesh.GetCellData().GetArray("Normals") is None
@@ -325,6 +325,45 @@ def test_normals_options_turn_arrays_off_and_on(phongvtk_cli, cube_ply, tmp_path
     corners = np.array(CUBE_POINTS, dtype=float) - 0.5
     expected = corners / np.linalg.norm(corners, axis=1)[:, None]  # angle weights: symmetric
     assert np.abs(normals - expected).max() < 1e-6
+
+
+def test_normals_split_at_30_degrees_by_default(phongvtk_cli, cube_ply, tmp_path):
+    # The cube's 90 degree edges are sharp at the default feature angle: each corner becomes
+    # three points, one per face, each with its face's normal.
+    assert phongvtk_cli("normals", cube_ply, "-o", "split.vtp", "--point-normals").returncode == 0
+    mesh = read_vtp(tmp_path / "split.vtp")
+    assert mesh.GetNumberOfPoints() == 24
+    normals = numpy_support.vtk_to_numpy(mesh.GetPointData().GetArray("Normals"))
+    assert sorted(map(tuple, np.abs(normals).tolist())) == sorted(
+        [(1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)] * 8)
+    original = numpy_support.vtk_to_numpy(mesh.GetPointData().GetArray("OriginalPointIds"))
+    assert sorted(original.tolist()) == sorted(list(range(8)) * 3)
+    # Wider than 90 degrees, or no splitting: the eight corners stay.
+    for options in (("--feature-angle", "90.5"), ("--no-splitting",)):
+        assert phongvtk_cli("normals", cube_ply, "-o", "whole.vtp", "--point-normals",
+                            *options).returncode == 0
+        assert read_vtp(tmp_path / "whole.vtp").GetNumberOfPoints() == 8
+
+
+@pytest.mark.parametrize("angle", ["-1", "180.5", "nan"])
+def test_feature_angle_outside_0_to_180_is_a_usage_error(phongvtk_cli, cube_ply, angle):
+    result = phongvtk_cli("normals", cube_ply, "-o", "x.vtp", "--feature-angle", angle)
+    assert result.returncode == 2
+    assert "--feature-angle" in result.stderr.splitlines()[-1]
+
+
+def test_render_keeps_creases_sharp_under_phong_shading(phongvtk_cli, cube_ply, tmp_path):
+    # A cube seen along a diagonal: with split normals every face is flat, so Phong shading
+    # equals flat shading; averaged across the edges it does not.
+    images = {}
+    for name, options in (("flat", ("--shading", "flat")), ("phong", ()),
+                          ("smooth", ("--no-splitting",))):
+        result = phongvtk_cli("render", cube_ply, "-o", f"{name}.png", "--azimuth", "30",
+                              "--elevation", "25", "--size", "160", "120", *options)
+        assert result.returncode == 0, result.stderr
+        images[name] = read_png(tmp_path / f"{name}.png").astype(int)
+    assert np.abs(images["phong"] - images["flat"]).max() <= 1
+    assert np.abs(images["smooth"] - images["flat"]).max() > 20
 
 
 def test_normals_writes_legacy_vtk_by_extension(phongvtk_cli, cube_ply, tmp_path):
