@@ -72,6 +72,9 @@ enum NormalStatus : std::uint8_t
   StatusDegenerate = 1,
   StatusNonFinite = 2,
   StatusNotSurface = 3,
+  /// Consistency: a polygon along an edge where a non-orientable surface still disagrees (its
+  /// normal is computed as usual).
+  StatusInconsistent = 4,
   /// Internal: Vector (+ VectorLo) holds w, the normal is still to be computed (see
   /// ComputeAreaVectorDeferred); never stored in an output.
   StatusPending = 255

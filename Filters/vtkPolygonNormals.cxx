@@ -4,6 +4,7 @@
 #include "PhongVTKCells.h"
 #include "PhongVTKFeatureAngle.h"
 #include "PhongVTKOptions.h"
+#include "PhongVTKOrientation.h"
 #include "PhongVTKParallel.h"
 #include "PhongVTKPointNormals.h"
 #include "PhongVTKSplitting.h"
@@ -588,6 +589,74 @@ vtkSmartPointer<vtkPolyData> SplitSharpEdges(
   return phongvtk::MeshWithCopies(input, split, self->GetComputeOriginalPointIds());
 }
 
+/// The first cell (VTK's numbering) with a point id outside [0, number of points), or -1.
+vtkIdType FirstInvalidCell(vtkPolyData* input)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  vtkIdType first = 0;
+  for (vtkCellArray* cells :
+    { input->GetVerts(), input->GetLines(), input->GetPolys(), input->GetStrips() })
+  {
+    const vtkIdType n = cells ? cells->GetNumberOfCells() : 0;
+    vtkIdType bad = -1;
+    if (n > 0)
+    {
+      cells->Visit(RawCells{},
+        [&](const auto* offsets, const auto* conn)
+        {
+          for (vtkIdType c = 0; c < n && bad < 0; ++c)
+          {
+            if (!ValidIds(conn + offsets[c], offsets[c + 1] - offsets[c], numPoints))
+            {
+              bad = c;
+            }
+          }
+        });
+    }
+    if (bad >= 0)
+    {
+      return first + bad;
+    }
+    first += n;
+  }
+  return -1;
+}
+
+/**
+ * Consistency and FlipNormals: `input` with its polygons reordered (PhongVTKOrientation.h);
+ * `clashes` the polygons left disagreeing on a non-orientable component, `nonOrientable` the
+ * number of such components. Every point id is valid.
+ */
+vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* input,
+  std::vector<vtkIdType>& clashes, vtkIdType& nonOrientable)
+{
+  vtkCellArray* polys = input->GetPolys();
+  const vtkIdType numPolys = polys->GetNumberOfCells();
+  phongvtk::Orientation orientation;
+  if (self->GetConsistency())
+  {
+    orientation =
+      phongvtk::ConsistentOrientation(numPolys, phongvtk::ManifoldEdges(input->GetPoints(), polys));
+    clashes = orientation.Clashes;
+    nonOrientable = orientation.NonOrientable;
+  }
+  else
+  {
+    orientation.Reverse.assign(static_cast<std::size_t>(numPolys), 0);
+  }
+  if (self->GetFlipNormals())
+  {
+    for (unsigned char& r : orientation.Reverse)
+    {
+      r ^= 1;
+    }
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(input);
+  out->SetPolys(phongvtk::ReversedPolygons(polys, orientation.Reverse));
+  return out;
+}
+
 template <class T, class O>
 bool Dispatch(vtkPolygonNormals* self, vtkPolyData* input, vtkPolyData* output, const T* points,
   double progressStart, vtkIdType& nonFinite, vtkIdType& firstBadCell)
@@ -728,13 +797,27 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
   bool ok = true;
   double progressStart = 0.0;
   vtkSmartPointer<vtkPolyData> source = input;
-  if (this->Splitting && this->ComputePointNormals)
+  // Orientation first: everything else follows the reordered polygons.
+  std::vector<vtkIdType> clashes;
+  vtkIdType nonOrientable = 0;
+  if ((this->Consistency || this->FlipNormals) && input->GetNumberOfPolys() > 0)
   {
+    firstBadCell = FirstInvalidCell(input);
+    ok = firstBadCell < 0;
+    if (ok)
+    {
+      source = Reoriented(this, input, clashes, nonOrientable);
+      output->ShallowCopy(source);
+    }
+  }
+  if (ok && this->Splitting && this->ComputePointNormals)
+  {
+    vtkPolyData* oriented = source;
     vtkSmartPointer<vtkDataArray> data = phongvtk::KernelCoordinates(points);
     void* raw = data->GetVoidPointer(0);
     source = data->GetDataType() == VTK_FLOAT
-      ? SplitSharpEdges(this, input, static_cast<const float*>(raw), firstBadCell)
-      : SplitSharpEdges(this, input, static_cast<const double*>(raw), firstBadCell);
+      ? SplitSharpEdges(this, oriented, static_cast<const float*>(raw), firstBadCell)
+      : SplitSharpEdges(this, oriented, static_cast<const double*>(raw), firstBadCell);
     ok = source != nullptr;
     if (ok)
     {
@@ -779,6 +862,25 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
     output->Initialize();
     return 1;
   }
+  if (nonOrientable > 0)
+  {
+    const vtkIdType firstPoly = source->GetNumberOfVerts() + source->GetNumberOfLines();
+    if (auto* status =
+          vtkUnsignedCharArray::SafeDownCast(output->GetCellData()->GetArray("NormalStatus")))
+    {
+      for (vtkIdType f : clashes)
+      {
+        unsigned char& value = status->GetPointer(0)[firstPoly + f];
+        value = value == phongvtk::StatusOk ? phongvtk::StatusInconsistent : value;
+      }
+    }
+    vtkWarningMacro(<< nonOrientable
+                    << " connected component(s) are not orientable: their polygons cannot all "
+                       "agree; "
+                    << clashes.size()
+                    << " polygon(s) along the edges where they still disagree have NormalStatus "
+                       "4.");
+  }
   if (nonFinite > 0)
   {
     vtkWarningMacro(<< nonFinite
@@ -810,6 +912,8 @@ void vtkPolygonNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ComputeAreas: " << (this->ComputeAreas ? "On" : "Off") << "\n";
   os << indent << "ComputeNormalStatus: " << (this->ComputeNormalStatus ? "On" : "Off") << "\n";
   os << indent << "PieceInvariant: " << (this->PieceInvariant ? "On" : "Off") << "\n";
+  os << indent << "Consistency: " << (this->Consistency ? "On" : "Off") << "\n";
+  os << indent << "FlipNormals: " << (this->FlipNormals ? "On" : "Off") << "\n";
   os << indent << "Splitting: " << (this->Splitting ? "On" : "Off") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "ComputeOriginalPointIds: " << (this->ComputeOriginalPointIds ? "On" : "Off")

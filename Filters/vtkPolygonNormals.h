@@ -10,8 +10,9 @@
  *
  * Cell outputs: `Normals` (unit normals, set as the active cell normals) and, on request,
  * `AreaVectors` (w/2: its length is the area), `Areas` and `NormalStatus` (0 ok, 1 degenerate:
- * zero area, 2 non-finite input coordinates, 3 not a surface cell). A degenerate, non-finite or
- * non-surface cell gets the zero vector: never a NaN and never an invented direction.
+ * zero area, 2 non-finite input coordinates, 3 not a surface cell, 4 along an edge where a
+ * non-orientable surface could not be made consistent: see Consistency). A degenerate, non-finite
+ * or non-surface cell gets the zero vector: never a NaN and never an invented direction.
  *
  * Point outputs (on request): `Normals` from the faces around each point, weighted by
  * PointWeighting: AREA (the sum of the faces' area vectors, i.e. the same rule applied to the
@@ -139,7 +140,7 @@ public:
   ///@{
   /**
    * Produce the uint8 cell array `NormalStatus`: 0 ok, 1 degenerate (zero area), 2 non-finite
-   * input, 3 not a surface cell. Default is off.
+   * input, 3 not a surface cell, 4 inconsistent orientation (Consistency). Default is off.
    */
   vtkSetMacro(ComputeNormalStatus, bool);
   vtkGetMacro(ComputeNormalStatus, bool);
@@ -160,6 +161,33 @@ public:
   vtkSetMacro(PieceInvariant, bool);
   vtkGetMacro(PieceInvariant, bool);
   vtkBooleanMacro(PieceInvariant, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Reorder the polygons so that neighbours agree: two polygons sharing a manifold edge (one
+   * that exactly two polygons have) run along it in opposite directions. Each connected component
+   * keeps the order of its first polygon; the others are reversed as needed, keeping their first
+   * point ((p0, p(n-1), ..., p1), so a reversed triangle's area vector is exactly the negated
+   * one). The result does not depend on the thread count. A non-orientable component (a Moebius
+   * strip) cannot agree everywhere: one warning gives the number of such components, and the
+   * polygons along the edges where they still disagree get NormalStatus 4. Strips, lines and
+   * vertices are not reordered. Everything computed (normals, areas, splitting) follows the
+   * reordered polygons. Default is off (the cells pass through unchanged).
+   */
+  vtkSetMacro(Consistency, bool);
+  vtkGetMacro(Consistency, bool);
+  vtkBooleanMacro(Consistency, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Reverse every polygon ((p0, p(n-1), ..., p1)), after Consistency: the cells' order and every
+   * normal computed from them turn together. Default is off.
+   */
+  vtkSetMacro(FlipNormals, bool);
+  vtkGetMacro(FlipNormals, bool);
+  vtkBooleanMacro(FlipNormals, bool);
   ///@}
 
   ///@{
@@ -229,6 +257,8 @@ protected:
   bool ComputeAreas = false;
   bool ComputeNormalStatus = false;
   bool PieceInvariant = true;
+  bool Consistency = false;
+  bool FlipNormals = false;
   bool Splitting = false;
   double FeatureAngle = 30.0;
   bool ComputeOriginalPointIds = true;

@@ -200,6 +200,21 @@ def add_splitting(parser, split=True):
                         help="average the normals across every edge, creases included")
 
 
+def add_orientation(parser):
+    """--consistency and --flip (of the polygons, before the normals)."""
+    parser.add_argument("--consistency", action="store_true",
+                        help="reorder the polygons so that neighbours agree in orientation "
+                             "(a non-orientable surface is reported and its seam flagged)")
+    parser.add_argument("--flip", action="store_true",
+                        help="reverse every polygon, and so every normal")
+
+
+def orient(normals, args):
+    """Consistency and FlipNormals of the vtkPolygonNormals `normals` as the options say."""
+    normals.SetConsistency(args.consistency)
+    normals.SetFlipNormals(args.flip)
+
+
 def feature_angle_of(args):
     """The feature angle the options ask for, or None for no splitting."""
     return None if getattr(args, "no_splitting", False) else args.feature_angle
@@ -301,6 +316,7 @@ def run_normals(args, progress):
     if feature_angle is not None:
         normals.SplittingOn()
         normals.SetFeatureAngle(feature_angle)
+    orient(normals, args)
     progress.run(normals, "normals", f"cannot compute the normals of '{args.mesh}'")
     output = normals.GetOutput()
     write_mesh(output, args.output, progress)
@@ -621,12 +637,14 @@ def build_parser():
                          help="no cell normals (on by default)")
     add_weighting(normals)
     add_splitting(normals)
+    add_orientation(normals)
     normals.add_argument("--area-vectors", action="store_true",
                          help="the cell array AreaVectors (w/2: its length is the area)")
     normals.add_argument("--areas", action="store_true", help="the cell array Areas")
     normals.add_argument("--status", action="store_true",
                          help="the cell array NormalStatus (0 ok, 1 degenerate, 2 non-finite, "
-                              "3 not a surface)")
+                              "3 not a surface, 4 on the seam of a non-orientable surface "
+                              "with --consistency)")
     normals.add_argument("--precision", choices=PRECISIONS, default="single",
                          help="precision of the output arrays: single (default), double, or "
                               "default (that of the points)")

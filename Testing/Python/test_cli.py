@@ -345,6 +345,24 @@ def test_normals_split_at_30_degrees_by_default(phongvtk_cli, cube_ply, tmp_path
         assert read_vtp(tmp_path / "whole.vtp").GetNumberOfPoints() == 8
 
 
+def test_normals_consistency_and_flip(phongvtk_cli, tmp_path):
+    # The cube with two faces reversed: --consistency makes every face agree with the first
+    # (outward), --flip then turns every face and normal inward.
+    faces = [list(f) for f in CUBE_FACES]
+    for k in (3, 4):
+        faces[k] = [faces[k][0]] + faces[k][:0:-1]
+    scrambled = write_ply(tmp_path / "scrambled.ply", CUBE_POINTS, faces)
+    outward = np.array(CUBE_NORMALS, dtype=float)
+    for options, expected in (((), outward * [[1], [1], [1], [-1], [-1], [1]]),
+                              (("--consistency",), outward),
+                              (("--consistency", "--flip"), -outward)):
+        assert phongvtk_cli("normals", scrambled, "-o", "out.vtp", "--precision", "double",
+                            *options).returncode == 0
+        mesh = read_vtp(tmp_path / "out.vtp")
+        normals = numpy_support.vtk_to_numpy(mesh.GetCellData().GetArray("Normals"))
+        assert (normals == expected).all(), options
+
+
 @pytest.mark.parametrize("angle", ["-1", "180.5", "nan"])
 def test_feature_angle_outside_0_to_180_is_a_usage_error(phongvtk_cli, cube_ply, angle):
     result = phongvtk_cli("normals", cube_ply, "-o", "x.vtp", "--feature-angle", angle)

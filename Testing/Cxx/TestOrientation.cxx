@@ -1,0 +1,401 @@
+// Consistency and FlipNormals of vtkPolygonNormals (PhongVTKOrientation.h): orientations
+// restored after random reversals, checked edge by edge and against vtkPolyDataNormals'
+// Consistency; a Moebius strip reported, not looped on; bitwise the same for every backend and
+// thread count.
+#include "PhongVTKFilterTestSupport.h"
+#include "PhongVTKOFFReader.h"
+#include "PhongVTKOrientation.h"
+#include "vtkPolygonNormals.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <map>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace
+{
+using phongvtk_test::Cell;
+using phongvtk_test::Cells;
+using phongvtk_test::MakePolyData;
+using phongvtk_test::MessageObserver;
+using phongvtk_test::Point;
+
+std::vector<Cell> PolygonsOf(vtkPolyData* mesh)
+{
+  std::vector<Cell> polys;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetPolys()->GetNumberOfCells(); ++c)
+  {
+    mesh->GetPolys()->GetCellAtId(c, ids);
+    polys.emplace_back(ids->begin(), ids->end());
+  }
+  return polys;
+}
+
+/// The filter with `configure`, its warnings and errors collected.
+vtkSmartPointer<vtkPolyData> RunFilter(vtkPolyData* input,
+  const std::function<void(vtkPolygonNormals*)>& configure, MessageObserver* messages = nullptr)
+{
+  vtkNew<vtkPolygonNormals> filter;
+  vtkNew<MessageObserver> own;
+  (messages ? messages : own.GetPointer())->Watch(filter);
+  configure(filter);
+  filter->SetInputData(input);
+  filter->Update();
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->ShallowCopy(filter->GetOutput());
+  return output;
+}
+
+/// A closed sphere of triangles, outward, double points.
+vtkSmartPointer<vtkPolyData> Sphere(int resolution)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(resolution);
+  source->SetPhiResolution(resolution);
+  source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  source->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->DeepCopy(source->GetOutput());
+  mesh->GetPointData()->Initialize();
+  return mesh;
+}
+
+/// `mesh` with a random share of its polygons reversed: VTK's way (the whole list backwards) or,
+/// with keepFirst, keeping the first point.
+vtkSmartPointer<vtkPolyData> RandomlyReversed(vtkPolyData* mesh, double share, unsigned seed,
+  std::vector<bool>* reversed = nullptr, bool keepFirst = false)
+{
+  std::mt19937_64 random(seed);
+  std::bernoulli_distribution flip(share);
+  Cells cells;
+  cells.Polys = PolygonsOf(mesh);
+  for (Cell& cell : cells.Polys)
+  {
+    const bool r = flip(random);
+    if (r)
+    {
+      std::reverse(cell.begin() + (keepFirst ? 1 : 0), cell.end());
+    }
+    if (reversed)
+    {
+      reversed->push_back(r);
+    }
+  }
+  return MakePolyData(phongvtk_test::PointsOf(mesh), cells);
+}
+
+/// Edges shared by exactly two polygons: how many run the same way in both (disagree).
+int DisagreeingEdges(vtkPolyData* mesh)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, std::vector<int>> edges; // (min, max) -> directions
+  for (const Cell& cell : PolygonsOf(mesh))
+  {
+    for (std::size_t k = 0; k < cell.size(); ++k)
+    {
+      const vtkIdType a = cell[k], b = cell[(k + 1) % cell.size()];
+      if (a != b)
+      {
+        edges[{ std::min(a, b), std::max(a, b) }].push_back(a < b ? 1 : -1);
+      }
+    }
+  }
+  int disagreeing = 0;
+  for (const auto& edge : edges)
+  {
+    disagreeing += edge.second.size() == 2 && edge.second[0] == edge.second[1];
+  }
+  return disagreeing;
+}
+
+/// A Moebius strip of n quads.
+vtkSmartPointer<vtkPolyData> Moebius(int n)
+{
+  std::vector<Point> p;
+  for (int i = 0; i < n; ++i)
+  {
+    const double t = 2.0 * M_PI * i / n;
+    for (double s : { -0.3, 0.3 })
+    {
+      const double r = 1.0 + s * std::cos(t / 2);
+      p.push_back({ r * std::cos(t), r * std::sin(t), s * std::sin(t / 2) });
+    }
+  }
+  Cells cells;
+  for (int i = 0; i < n; ++i)
+  {
+    const vtkIdType a = 2 * i, b = 2 * i + 1;
+    // The last quad joins the strip to its start with a half twist.
+    const vtkIdType c = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+    const vtkIdType d = i + 1 < n ? 2 * (i + 1) : 1;
+    cells.Polys.push_back({ a, d, c, b });
+  }
+  return MakePolyData(p, cells);
+}
+
+void ExpectSameBits(vtkDataArray* a, vtkDataArray* b, const std::string& what)
+{
+  ASSERT_NE(a, nullptr) << what;
+  ASSERT_NE(b, nullptr) << what;
+  ASSERT_EQ(a->GetDataSize(), b->GetDataSize()) << what;
+  EXPECT_EQ(std::memcmp(a->GetVoidPointer(0), b->GetVoidPointer(0),
+              static_cast<std::size_t>(a->GetDataSize() * a->GetDataTypeSize())),
+    0)
+    << what;
+}
+} // namespace
+
+TEST(Orientation, RandomReversalsOfAClosedSurfaceAreUndone)
+{
+  auto sphere = Sphere(40);
+  ASSERT_EQ(DisagreeingEdges(sphere), 0);
+  std::vector<bool> reversed;
+  auto scrambled = RandomlyReversed(sphere, 0.3, 1, &reversed, true);
+  ASSERT_GT(DisagreeingEdges(scrambled), 100);
+  auto out = RunFilter(scrambled, [](vtkPolygonNormals* f) { f->ConsistencyOn(); });
+  EXPECT_EQ(DisagreeingEdges(out), 0);
+  // The first polygon keeps its order, so the sphere points the way polygon 0 did: every
+  // polygon's normal is the original one times the same sign, exactly (a reversed triangle keeps
+  // its first point, so its area vector is exactly negated).
+  auto plain = RunFilter(
+    sphere, [](vtkPolygonNormals* f) { f->SetOutputPrecision(vtkAlgorithm::DOUBLE_PRECISION); });
+  vtkDataArray* original = plain->GetCellData()->GetNormals();
+  auto exact = RunFilter(scrambled,
+    [](vtkPolygonNormals* f)
+    {
+      f->ConsistencyOn();
+      f->SetOutputPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+    });
+  vtkDataArray* restored = exact->GetCellData()->GetNormals();
+  const double sign = reversed[0] ? -1.0 : 1.0;
+  for (vtkIdType c = 0; c < sphere->GetNumberOfCells(); ++c)
+  {
+    double a[3], b[3];
+    original->GetTuple(c, a);
+    restored->GetTuple(c, b);
+    ASSERT_TRUE(b[0] == sign * a[0] && b[1] == sign * a[1] && b[2] == sign * a[2]) << "cell " << c;
+  }
+}
+
+TEST(Orientation, AgreesWithVTKsConsistencyOnRealMeshes)
+{
+  if (!phongvtk_test::HaveCGALMeshes())
+  {
+    GTEST_SKIP() << "CGAL's sample meshes are not unpacked";
+  }
+  for (const char* name : { "fandisk.off", "elephant.off", "bunny00.off" })
+  {
+    auto mesh = phongvtk_test::ReadOFF(phongvtk_test::CGALMeshPath(name));
+    ASSERT_NE(mesh, nullptr) << name;
+    auto scrambled = RandomlyReversed(mesh, 0.5, 2);
+    auto ours = RunFilter(scrambled, [](vtkPolygonNormals* f) { f->ConsistencyOn(); });
+    vtkNew<vtkPolyDataNormals> vtk;
+    vtk->SetInputData(scrambled);
+    vtk->ConsistencyOn();
+    vtk->SplittingOff();
+    vtk->AutoOrientNormalsOff();
+    vtk->Update();
+    EXPECT_EQ(DisagreeingEdges(ours), DisagreeingEdges(vtk->GetOutput())) << name;
+    EXPECT_EQ(DisagreeingEdges(ours), 0) << name;
+    // The same polygons reversed: same cell normals up to rounding (VTK reverses the whole list,
+    // which changes the fan's first point).
+    vtkDataArray* a = ours->GetCellData()->GetNormals();
+    auto theirs = RunFilter(vtk->GetOutput(), [](vtkPolygonNormals*) {});
+    vtkDataArray* b = theirs->GetCellData()->GetNormals();
+    for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+    {
+      double x[3], y[3];
+      a->GetTuple(c, x);
+      b->GetTuple(c, y);
+      ASSERT_GT(x[0] * y[0] + x[1] * y[1] + x[2] * y[2], 0.99) << name << " cell " << c;
+    }
+  }
+}
+
+TEST(Orientation, EachComponentKeepsItsFirstPolygon)
+{
+  // Two separate triangles pairs: the second component's first polygon (cell 2) is reversed
+  // against its neighbour (cell 3); the first component agrees already.
+  const std::vector<Point> p = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 }, { 5, 0, 0 },
+    { 6, 0, 0 }, { 5, 1, 0 }, { 6, 1, 0 } };
+  Cells cells;
+  cells.Polys = { { 0, 1, 2 }, { 1, 3, 2 }, { 4, 6, 5 }, { 5, 7, 6 } };
+  auto out = RunFilter(MakePolyData(p, cells), [](vtkPolygonNormals* f) { f->ConsistencyOn(); });
+  const std::vector<Cell> polys = PolygonsOf(out);
+  EXPECT_EQ(polys[0], (Cell{ 0, 1, 2 }));
+  EXPECT_EQ(polys[1], (Cell{ 1, 3, 2 }));
+  EXPECT_EQ(polys[2], (Cell{ 4, 6, 5 }));
+  EXPECT_EQ(polys[3], (Cell{ 5, 6, 7 })) << "reversed keeping its first point";
+}
+
+TEST(Orientation, MoebiusStripIsReportedAndItsSeamFlagged)
+{
+  auto strip = Moebius(24);
+  vtkNew<MessageObserver> messages;
+  auto out = RunFilter(
+    strip,
+    [](vtkPolygonNormals* f)
+    {
+      f->ConsistencyOn();
+      f->ComputeNormalStatusOn();
+      f->ComputePointNormalsOn();
+    },
+    messages);
+  EXPECT_TRUE(messages->Errors.empty());
+  ASSERT_EQ(messages->Warnings.size(), 1u);
+  EXPECT_NE(
+    messages->Warnings[0].find("1 connected component(s) are not orientable"), std::string::npos)
+    << messages->Warnings[0];
+  EXPECT_EQ(DisagreeingEdges(out), 1) << "one seam is the least a Moebius strip needs";
+  auto* status = vtkUnsignedCharArray::SafeDownCast(out->GetCellData()->GetArray("NormalStatus"));
+  ASSERT_NE(status, nullptr);
+  int flagged = 0;
+  for (vtkIdType c = 0; c < status->GetNumberOfTuples(); ++c)
+  {
+    EXPECT_TRUE(status->GetValue(c) == 0 || status->GetValue(c) == 4);
+    flagged += status->GetValue(c) == 4;
+  }
+  EXPECT_EQ(flagged, 2) << "the two quads along the seam";
+  // An orientable strip (no twist) gives neither warning nor flag.
+  Cells ring;
+  ring.Polys = PolygonsOf(strip);
+  ring.Polys.back() = { 46, 0, 1, 47 };
+  vtkNew<MessageObserver> quiet;
+  RunFilter(
+    MakePolyData(phongvtk_test::PointsOf(strip), ring),
+    [](vtkPolygonNormals* f) { f->ConsistencyOn(); }, quiet);
+  EXPECT_TRUE(quiet->Warnings.empty());
+}
+
+TEST(Orientation, NonManifoldEdgesImposeNothing)
+{
+  // A fin of three triangles on the edge 0-1 running the same way: no pair is manifold there.
+  const std::vector<Point> p = { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 1, 0 }, { 0.5, -1, 0 },
+    { 0.5, 0, 1 } };
+  Cells cells;
+  cells.Polys = { { 0, 1, 2 }, { 0, 1, 3 }, { 0, 1, 4 } };
+  auto out = RunFilter(MakePolyData(p, cells), [](vtkPolygonNormals* f) { f->ConsistencyOn(); });
+  EXPECT_EQ(PolygonsOf(out), cells.Polys);
+}
+
+TEST(Orientation, FlipNormalsTurnsTheCellsAndEveryNormalTogether)
+{
+  auto sphere = Sphere(30);
+  for (bool consistency : { false, true })
+  {
+    auto configure = [consistency](vtkPolygonNormals* f)
+    {
+      f->SetConsistency(consistency);
+      f->ComputePointNormalsOn();
+      f->SetOutputPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+    };
+    auto plain = RunFilter(sphere, configure);
+    auto flipped = RunFilter(sphere,
+      [&](vtkPolygonNormals* f)
+      {
+        configure(f);
+        f->FlipNormalsOn();
+      });
+    const std::vector<Cell> a = PolygonsOf(plain), b = PolygonsOf(flipped);
+    for (std::size_t c = 0; c < a.size(); ++c)
+    {
+      Cell expected = { a[c][0] };
+      expected.insert(expected.end(), a[c].rbegin(), a[c].rend() - 1);
+      ASSERT_EQ(b[c], expected);
+    }
+    for (vtkDataArray* n :
+      { plain->GetCellData()->GetNormals(), plain->GetPointData()->GetNormals() })
+    {
+      vtkDataArray* m = n == plain->GetCellData()->GetNormals()
+        ? flipped->GetCellData()->GetNormals()
+        : flipped->GetPointData()->GetNormals();
+      for (vtkIdType i = 0; i < n->GetNumberOfTuples(); ++i)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          ASSERT_EQ(m->GetComponent(i, k), -n->GetComponent(i, k)) << i;
+        }
+      }
+    }
+  }
+}
+
+TEST(Orientation, SameOutputForEveryBackendAndThreadCount)
+{
+  auto scrambled = RandomlyReversed(Sphere(300), 0.4, 3); // 179,400 triangles
+  const std::string original = vtkSMPTools::GetBackend();
+  std::vector<vtkSmartPointer<vtkPolyData>> outputs;
+  for (const auto& config : std::vector<std::pair<const char*, int>>{
+         { "Sequential", 1 }, { "STDThread", 1 }, { "STDThread", 2 }, { "STDThread", 4 } })
+  {
+    ASSERT_TRUE(vtkSMPTools::SetBackend(config.first));
+    vtkSMPTools::Initialize(config.second);
+    outputs.push_back(RunFilter(scrambled,
+      [](vtkPolygonNormals* f)
+      {
+        f->ConsistencyOn();
+        f->SplittingOn();
+        f->ComputePointNormalsOn();
+      }));
+  }
+  vtkSMPTools::SetBackend(original.c_str());
+  for (std::size_t k = 1; k < outputs.size(); ++k)
+  {
+    EXPECT_EQ(PolygonsOf(outputs[k]), PolygonsOf(outputs[0])) << k;
+    ExpectSameBits(outputs[0]->GetPointData()->GetNormals(),
+      outputs[k]->GetPointData()->GetNormals(), "point normals " + std::to_string(k));
+  }
+}
+
+TEST(Orientation, BadPointIdsAreStillAnErrorNamingTheCell)
+{
+  Cells cells;
+  cells.Polys = { { 0, 1, 2 }, { 2, 1, 7 } };
+  auto mesh = MakePolyData({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, cells);
+  vtkNew<MessageObserver> messages;
+  auto out = RunFilter(
+    mesh, [](vtkPolygonNormals* f) { f->ConsistencyOn(); }, messages);
+  ASSERT_EQ(messages->Errors.size(), 1u);
+  EXPECT_NE(
+    messages->Errors[0].find("Cell 1 refers to a point id outside [0, 3)"), std::string::npos)
+    << messages->Errors[0];
+  EXPECT_EQ(out->GetNumberOfCells(), 0);
+}
+
+TEST(OrientationKernel, ClashesAreThePolygonsOfTheDisagreeingPairsOnly)
+{
+  // A cycle of three polygons where every pair runs the same way: odd, so not orientable.
+  const std::vector<phongvtk::PolygonPair> pairs = { { 0, 1, true }, { 0, 2, true },
+    { 1, 2, true } };
+  const phongvtk::Orientation o = phongvtk::ConsistentOrientation(3, pairs);
+  EXPECT_EQ(o.NonOrientable, 1);
+  EXPECT_EQ(o.Reverse, (std::vector<unsigned char>{ 0, 1, 1 }));
+  EXPECT_EQ(o.Clashes, (std::vector<vtkIdType>{ 1, 2 }));
+  // Even cycle: orientable.
+  const phongvtk::Orientation even = phongvtk::ConsistentOrientation(
+    4, { { 0, 1, true }, { 0, 3, false }, { 1, 2, false }, { 2, 3, true } });
+  EXPECT_EQ(even.NonOrientable, 0);
+  EXPECT_TRUE(even.Clashes.empty());
+  EXPECT_EQ(even.Reverse, (std::vector<unsigned char>{ 0, 1, 1, 0 }));
+}
