@@ -18,6 +18,7 @@
 #define PhongVTKSplitting_h
 
 #include "PhongVTKCells.h"
+#include "PhongVTKEdgeNeighbours.h"
 #include "PhongVTKParallel.h"
 
 #include "vtkCellArray.h"
@@ -30,7 +31,6 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
-#include "vtkStaticCellLinksTemplate.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -59,9 +59,7 @@ struct PointRegions
   std::vector<std::int32_t> Label;
   std::int32_t Regions = 0;
 
-  // Scratch: union-find parents, and (neighbour q, polygon index) of every edge p-q at p.
-  std::vector<std::int32_t> Parent;
-  std::vector<std::pair<vtkIdType, std::int32_t>> Edges;
+  std::vector<std::int32_t> Parent; // scratch: union-find
 
   std::int32_t Root(std::int32_t i)
   {
@@ -75,58 +73,42 @@ struct PointRegions
 
   /**
    * Groups the polygons `cells[0 .. count)` around point p (a polygon listed once for each time
-   * it uses p). `corners(f, fn)` calls fn(previous id, next id) for each corner of polygon f at
-   * p; `directed(f)` says whether f has a direction, `smooth(f1, f2)` whether the edge between
-   * two directed polygons is smooth.
+   * it uses p). `across(f, fn)` calls fn(g) for every polygon g across a manifold edge of f at p
+   * (EdgeNeighbours); `directed(f)` says whether f has a direction, `smooth(f1, f2)` whether the
+   * edge between two directed polygons is smooth.
    */
-  template <class CornersFn, class DirectedFn, class SmoothFn>
-  void Compute(vtkIdType p, const vtkIdType* cells, vtkIdType count, const CornersFn& corners,
+  template <class AcrossFn, class DirectedFn, class SmoothFn>
+  void Compute(vtkIdType p, const vtkIdType* cells, vtkIdType count, const AcrossFn& across,
     const DirectedFn& directed, const SmoothFn& smooth)
   {
+    (void)p;
     this->Faces.assign(cells, cells + count);
     std::sort(this->Faces.begin(), this->Faces.end());
     this->Faces.erase(std::unique(this->Faces.begin(), this->Faces.end()), this->Faces.end());
     const auto n = static_cast<std::int32_t>(this->Faces.size());
     this->Parent.resize(static_cast<std::size_t>(n));
     std::iota(this->Parent.begin(), this->Parent.end(), 0);
-    this->Edges.clear();
-    for (std::int32_t i = 0; i < n; ++i)
+    for (std::int32_t a = 0; a < n; ++a)
     {
-      corners(this->Faces[i],
-        [&](vtkIdType previous, vtkIdType next)
-        {
-          if (previous != p)
-          {
-            this->Edges.emplace_back(previous, i);
-          }
-          if (next != p)
-          {
-            this->Edges.emplace_back(next, i);
-          }
-        });
-    }
-    std::sort(this->Edges.begin(), this->Edges.end());
-    for (std::size_t e = 0; e < this->Edges.size();)
-    {
-      std::size_t end = e + 1;
-      while (end < this->Edges.size() && this->Edges[end].first == this->Edges[e].first)
+      const vtkIdType fa = this->Faces[a];
+      if (!directed(fa))
       {
-        ++end;
+        continue;
       }
-      if (end - e == 2)
-      {
-        const std::int32_t a = this->Edges[e].second;
-        const std::int32_t b = this->Edges[e + 1].second;
-        const vtkIdType fa = this->Faces[a];
-        const vtkIdType fb = this->Faces[b];
-        if (a != b && directed(fa) && directed(fb) && smooth(fa, fb))
+      across(fa,
+        [&](vtkIdType fb)
         {
+          // Each edge is seen from both sides: join from the smaller polygon only.
+          if (fb < fa || !directed(fb) || !smooth(fa, fb))
+          {
+            return;
+          }
+          const auto b = static_cast<std::int32_t>(
+            std::lower_bound(this->Faces.begin(), this->Faces.end(), fb) - this->Faces.begin());
           const std::int32_t ra = this->Root(a);
           const std::int32_t rb = this->Root(b);
           this->Parent[std::max(ra, rb)] = std::min(ra, rb);
-        }
-      }
-      e = end;
+        });
     }
     // Faces are sorted, so regions are met in the order of their smallest polygon.
     this->Label.assign(static_cast<std::size_t>(n), 0);
@@ -162,22 +144,18 @@ struct PointRegions
 };
 
 /**
- * Splits the points of `polys` (every point id valid) at sharp edges. `directed(f)` and
- * `smooth(f1, f2)` as for PointRegions, f the index of a polygon in `polys`; both are called from
- * several threads. The points are taken in parallel, each on its own: the same result for any
- * number of threads.
+ * Splits the points of `polys` (every point id valid; `links` and `neighbours` theirs,
+ * PhongVTKEdgeNeighbours.h) at sharp edges. `directed(f)` and `smooth(f1, f2)` as for
+ * PointRegions, f the index of a polygon in `polys`; both are called from several threads. The
+ * points are taken in parallel, each on its own: the same result for any number of threads.
+ * Without a split point the polygons are `polys` itself.
  */
 template <class DirectedFn, class SmoothFn>
-SplitPolygons SplitAtSharpEdges(
-  vtkPoints* points, vtkCellArray* polys, const DirectedFn& directed, const SmoothFn& smooth)
+SplitPolygons SplitAtSharpEdges(vtkPoints* points, vtkCellArray* polys, PolygonLinks& links,
+  const std::vector<vtkIdType>& neighbours, const DirectedFn& directed, const SmoothFn& smooth)
 {
   const vtkIdType numPoints = points->GetNumberOfPoints();
   const vtkIdType numPolys = polys->GetNumberOfCells();
-  vtkNew<vtkPolyData> surface;
-  surface->SetPoints(points);
-  surface->SetPolys(polys);
-  vtkStaticCellLinksTemplate<vtkIdType> links;
-  links.BuildLinks(surface);
 
   // The corners of polygon f at point p: (previous, next) point ids of each.
   auto forCorners = [](const auto* offsets, const auto* conn, vtkIdType f, vtkIdType p, auto&& fn)
@@ -220,8 +198,21 @@ SplitPolygons SplitAtSharpEdges(
               p, cells, count,
               [&](vtkIdType f, auto&& fn)
               {
+                const vtkIdType m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
                 forCorners(offsets, conn, f, p,
-                  [&](vtkIdType, vtkIdType previous, vtkIdType next) { fn(previous, next); });
+                  [&](vtkIdType k, vtkIdType, vtkIdType)
+                  {
+                    // The edges k (to the next corner) and k - 1 (from the previous one).
+                    for (vtkIdType slot : { k, (k + m - 1) % m })
+                    {
+                      const vtkIdType across = neighbours[static_cast<std::size_t>(
+                        static_cast<vtkIdType>(offsets[f]) + slot)];
+                      if (across >= 0)
+                      {
+                        fn(across >> 1);
+                      }
+                    }
+                  });
               },
               directed, smooth);
             copies[static_cast<std::size_t>(p) + 1] = std::max<vtkIdType>(regions.Regions - 1, 0);
@@ -238,12 +229,13 @@ SplitPolygons SplitAtSharpEdges(
   SplitPolygons result;
   const vtkIdType numCopies = copies.back();
   result.CopyOf.resize(static_cast<std::size_t>(numCopies));
-  result.Polys = vtkSmartPointer<vtkCellArray>::New();
-  result.Polys->DeepCopy(polys);
   if (numCopies == 0)
   {
+    result.Polys = polys;
     return result;
   }
+  result.Polys = vtkSmartPointer<vtkCellArray>::New();
+  result.Polys->DeepCopy(polys);
   if (!result.Polys->IsStorage64Bit() && numPoints + numCopies > VTK_INT_MAX)
   {
     result.Polys->ConvertTo64BitStorage();

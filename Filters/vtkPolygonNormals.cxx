@@ -502,6 +502,27 @@ void vtkPolygonNormals::SetOutputPrecision(int precision)
 //------------------------------------------------------------------------------
 namespace
 {
+/// The polygons around every point and across every edge (PhongVTKEdgeNeighbours.h), built
+/// once for Consistency and Splitting: reversing polygons keeps the links, and the neighbours
+/// follow with ReverseEdgeSlots.
+struct Adjacency
+{
+  phongvtk::PolygonLinks Links;
+  std::vector<vtkIdType> Neighbours;
+  bool Built = false;
+
+  void Build(vtkPolyData* mesh)
+  {
+    if (!this->Built)
+    {
+      phongvtk::BuildPolygonLinks(mesh->GetPoints(), mesh->GetPolys(), this->Links);
+      this->Neighbours =
+        phongvtk::EdgeNeighbours(mesh->GetNumberOfPoints(), mesh->GetPolys(), this->Links);
+      this->Built = true;
+    }
+  }
+};
+
 /// Progress: splitting reports [0, SplitShare), the normals of the split mesh the rest.
 constexpr double SplitShare = 0.3;
 
@@ -512,8 +533,8 @@ constexpr double SplitShare = 0.3;
  * cell refers to a point that does not exist (firstBadCell names it).
  */
 template <class T>
-vtkSmartPointer<vtkPolyData> SplitSharpEdges(
-  vtkPolygonNormals* self, vtkPolyData* input, const T* points, vtkIdType& firstBadCell)
+vtkSmartPointer<vtkPolyData> SplitSharpEdges(vtkPolygonNormals* self, vtkPolyData* input,
+  const T* points, Adjacency& adjacency, vtkIdType& firstBadCell)
 {
   const vtkIdType numCells = input->GetNumberOfCells();
   std::vector<double> normals(3 * static_cast<std::size_t>(numCells));
@@ -581,8 +602,9 @@ vtkSmartPointer<vtkPolyData> SplitSharpEdges(
           const std::int64_t m2 = coordinates(f2, xyz2);
           return !phongvtk::detail::ExactFeatureEdgeIsSharp(xyz1.data(), m1, xyz2.data(), m2, c);
         };
-        split =
-          phongvtk::SplitAtSharpEdges(input->GetPoints(), input->GetPolys(), directed, smooth);
+        adjacency.Build(input);
+        split = phongvtk::SplitAtSharpEdges(input->GetPoints(), input->GetPolys(), adjacency.Links,
+          adjacency.Neighbours, directed, smooth);
       });
   }
   self->UpdateProgress(SplitShare);
@@ -625,18 +647,21 @@ vtkIdType FirstInvalidCell(vtkPolyData* input)
 /**
  * Consistency and FlipNormals: `input` with its polygons reordered (PhongVTKOrientation.h);
  * `clashes` the polygons left disagreeing on a non-orientable component, `nonOrientable` the
- * number of such components. Every point id is valid.
+ * number of such components. Every point id is valid. With Consistency, `adjacency` is built and
+ * follows the reordering.
  */
 vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* input,
-  std::vector<vtkIdType>& clashes, vtkIdType& nonOrientable)
+  Adjacency& adjacency, std::vector<vtkIdType>& clashes, vtkIdType& nonOrientable)
 {
   vtkCellArray* polys = input->GetPolys();
   const vtkIdType numPolys = polys->GetNumberOfCells();
   phongvtk::Orientation orientation;
   if (self->GetConsistency())
   {
-    orientation =
-      phongvtk::ConsistentOrientation(numPolys, phongvtk::ManifoldEdges(input->GetPoints(), polys));
+    adjacency.Build(input);
+    polys->Visit(RawCells{},
+      [&](const auto* offsets, const auto*)
+      { orientation = phongvtk::ConsistentOrientation(numPolys, offsets, adjacency.Neighbours); });
     clashes = orientation.Clashes;
     nonOrientable = orientation.NonOrientable;
   }
@@ -650,6 +675,10 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
     {
       r ^= 1;
     }
+  }
+  if (adjacency.Built)
+  {
+    phongvtk::ReverseEdgeSlots(adjacency.Neighbours, polys, orientation.Reverse);
   }
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->ShallowCopy(input);
@@ -800,13 +829,14 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
   // Orientation first: everything else follows the reordered polygons.
   std::vector<vtkIdType> clashes;
   vtkIdType nonOrientable = 0;
+  Adjacency adjacency; // built once for Consistency and Splitting
   if ((this->Consistency || this->FlipNormals) && input->GetNumberOfPolys() > 0)
   {
     firstBadCell = FirstInvalidCell(input);
     ok = firstBadCell < 0;
     if (ok)
     {
-      source = Reoriented(this, input, clashes, nonOrientable);
+      source = Reoriented(this, input, adjacency, clashes, nonOrientable);
       output->ShallowCopy(source);
     }
   }
@@ -816,8 +846,8 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
     vtkSmartPointer<vtkDataArray> data = phongvtk::KernelCoordinates(points);
     void* raw = data->GetVoidPointer(0);
     source = data->GetDataType() == VTK_FLOAT
-      ? SplitSharpEdges(this, oriented, static_cast<const float*>(raw), firstBadCell)
-      : SplitSharpEdges(this, oriented, static_cast<const double*>(raw), firstBadCell);
+      ? SplitSharpEdges(this, oriented, static_cast<const float*>(raw), adjacency, firstBadCell)
+      : SplitSharpEdges(this, oriented, static_cast<const double*>(raw), adjacency, firstBadCell);
     ok = source != nullptr;
     if (ok)
     {

@@ -385,17 +385,39 @@ TEST(Orientation, BadPointIdsAreStillAnErrorNamingTheCell)
 
 TEST(OrientationKernel, ClashesAreThePolygonsOfTheDisagreeingPairsOnly)
 {
-  // A cycle of three polygons where every pair runs the same way: odd, so not orientable.
-  const std::vector<phongvtk::PolygonPair> pairs = { { 0, 1, true }, { 0, 2, true },
-    { 1, 2, true } };
-  const phongvtk::Orientation o = phongvtk::ConsistentOrientation(3, pairs);
+  // A cycle of three polygons (two edge slots each) where every pair runs the same way along
+  // its edge: odd, so not orientable. A neighbour is 2 * polygon + (1 for the same direction).
+  const std::vector<vtkIdType> offsets = { 0, 2, 4, 6 };
+  const std::vector<vtkIdType> odd = { 3, 5, 1, 5, 1, 3 };
+  const phongvtk::Orientation o = phongvtk::ConsistentOrientation(3, offsets.data(), odd);
   EXPECT_EQ(o.NonOrientable, 1);
   EXPECT_EQ(o.Reverse, (std::vector<unsigned char>{ 0, 1, 1 }));
   EXPECT_EQ(o.Clashes, (std::vector<vtkIdType>{ 1, 2 }));
-  // Even cycle: orientable.
-  const phongvtk::Orientation even = phongvtk::ConsistentOrientation(
-    4, { { 0, 1, true }, { 0, 3, false }, { 1, 2, false }, { 2, 3, true } });
-  EXPECT_EQ(even.NonOrientable, 0);
-  EXPECT_TRUE(even.Clashes.empty());
-  EXPECT_EQ(even.Reverse, (std::vector<unsigned char>{ 0, 1, 1, 0 }));
+  // Even cycle 0-1-2-3-0, two pairs the same way: orientable. Boundary slots hold -1.
+  const std::vector<vtkIdType> offsets4 = { 0, 3, 6, 9, 12 };
+  const std::vector<vtkIdType> even = { 3, 6, -1, 1, 4, -1, 2, 7, -1, 0, 5, -1 };
+  const phongvtk::Orientation e = phongvtk::ConsistentOrientation(4, offsets4.data(), even);
+  EXPECT_EQ(e.NonOrientable, 0);
+  EXPECT_TRUE(e.Clashes.empty());
+  EXPECT_EQ(e.Reverse, (std::vector<unsigned char>{ 0, 1, 1, 0 }));
+}
+
+TEST(OrientationKernel, EdgeNeighboursOfAFanWithAFinAndABoundary)
+{
+  // Triangles 0 (0,1,2), 1 (0,2,3) share 0-2 running opposite ways; 2 (0,3,4) shares 0-3 with 1
+  // running the same way; 3, 4, 5 all have 4-5 (non-manifold).
+  Cells cells;
+  cells.Polys = { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 4, 3 }, { 4, 5, 6 }, { 5, 4, 7 }, { 4, 5, 8 } };
+  std::vector<Point> p(9, Point{ 0, 0, 0 });
+  auto mesh = MakePolyData(p, cells);
+  phongvtk::PolygonLinks links;
+  phongvtk::BuildPolygonLinks(mesh->GetPoints(), mesh->GetPolys(), links);
+  const std::vector<vtkIdType> n = phongvtk::EdgeNeighbours(9, mesh->GetPolys(), links);
+  const std::vector<vtkIdType> expected = {
+    -1, -1, 2 * 1,                     // 0-1, 1-2 boundary; 2-0 with polygon 1, opposite
+    2 * 0, -1, 2 * 2 + 1,              // 0-2 with 0; 2-3 boundary; 3-0 with 2, same way
+    -1, -1, 2 * 1 + 1,                 // 0-4 boundary, 4-3 boundary, 3-0 with 1
+    -1, -1, -1, -1, -1, -1, -1, -1, -1 // the fin: nothing manifold
+  };
+  EXPECT_EQ(n, expected);
 }

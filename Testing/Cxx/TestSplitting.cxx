@@ -263,50 +263,45 @@ std::vector<double> Flat(const std::vector<Point>& polygon)
 
 TEST(SplittingRegions, AFanSplitsAtItsSharpEdgesOnly)
 {
-  // Point 0 with a closed fan of six triangles 0-(k)-(k+1); edges to 1 and 4 are sharp.
-  std::vector<std::array<vtkIdType, 3>> tris;
-  for (vtkIdType k = 0; k < 6; ++k)
-  {
-    tris.push_back({ 0, 1 + k, 1 + (k + 1) % 6 });
-  }
+  // Point 0 with a closed fan of six triangles; triangles f and f + 1 (mod 6) share an edge.
+  // The edges between 5 and 0 and between 2 and 3 are sharp.
   const std::vector<vtkIdType> cells = { 0, 1, 2, 3, 4, 5 };
-  auto corners = [&](vtkIdType f, auto&& fn)
+  auto across = [](vtkIdType f, auto&& fn)
   {
-    fn(tris[f][2], tris[f][1]);
+    fn((f + 1) % 6);
+    fn((f + 5) % 6);
   };
   auto directed = [](vtkIdType)
   {
     return true;
   };
-  // Triangles f and f + 1 share the edge 0-(f + 2); sharp at 0-1 (between 5 and 0) and 0-4
-  // (between 2 and 3).
   auto smooth = [](vtkIdType a, vtkIdType b)
   {
     const vtkIdType lo = std::min(a, b), hi = std::max(a, b);
     return !((lo == 0 && hi == 5) || (lo == 2 && hi == 3));
   };
   phongvtk::PointRegions regions;
-  regions.Compute(0, cells.data(), 6, corners, directed, smooth);
+  regions.Compute(0, cells.data(), 6, across, directed, smooth);
   EXPECT_EQ(regions.Regions, 2);
-  EXPECT_EQ(regions.LabelOf(0), 0);
-  EXPECT_EQ(regions.LabelOf(1), 0);
-  EXPECT_EQ(regions.LabelOf(2), 0);
-  EXPECT_EQ(regions.LabelOf(3), 1);
-  EXPECT_EQ(regions.LabelOf(4), 1);
-  EXPECT_EQ(regions.LabelOf(5), 1);
+  for (vtkIdType f = 0; f < 6; ++f)
+  {
+    EXPECT_EQ(regions.LabelOf(f), f < 3 ? 0 : 1) << f;
+  }
 }
 
-TEST(SplittingRegions, NonManifoldEdgesAndUndirectedPolygonsJoinNothing)
+TEST(SplittingRegions, UndirectedPolygonsJoinNothingAndKeepThePoint)
 {
-  // Three triangles share the edge 0-1 (a fin); a fourth, without direction, shares 0-2 with the
-  // first. Every edge is smooth, yet nothing is joined: regions {0}, {1}, {2}; the undirected
-  // polygon keeps the point (label 0) and adds no region.
-  const std::vector<std::array<vtkIdType, 2>> neighbours = { { 1, 2 }, { 1, 3 }, { 1, 4 },
-    { 2, 5 } };
+  // A chain 0 - 3 - 1 - 2 across manifold edges, every edge smooth, but polygon 3 has no
+  // direction: regions {0}, {1, 2}; polygon 3 keeps the point (label 0) and adds no region.
+  const std::map<vtkIdType, std::vector<vtkIdType>> neighbours = { { 0, { 3 } }, { 3, { 0, 1 } },
+    { 1, { 3, 2 } }, { 2, { 1 } } };
   const std::vector<vtkIdType> cells = { 3, 2, 1, 0, 0 }; // unsorted, one listed twice
-  auto corners = [&](vtkIdType f, auto&& fn)
+  auto across = [&](vtkIdType f, auto&& fn)
   {
-    fn(neighbours[f][0], neighbours[f][1]);
+    for (vtkIdType g : neighbours.at(f))
+    {
+      fn(g);
+    }
   };
   auto directed = [](vtkIdType f)
   {
@@ -317,22 +312,21 @@ TEST(SplittingRegions, NonManifoldEdgesAndUndirectedPolygonsJoinNothing)
     return true;
   };
   phongvtk::PointRegions regions;
-  regions.Compute(0, cells.data(), 5, corners, directed, smooth);
-  EXPECT_EQ(regions.Regions, 3);
+  regions.Compute(0, cells.data(), 5, across, directed, smooth);
+  EXPECT_EQ(regions.Regions, 2);
   EXPECT_EQ(regions.LabelOf(0), 0);
   EXPECT_EQ(regions.LabelOf(1), 1);
-  EXPECT_EQ(regions.LabelOf(2), 2);
+  EXPECT_EQ(regions.LabelOf(2), 1);
   EXPECT_EQ(regions.LabelOf(3), 0);
 }
 
 TEST(SplittingRegions, RegionsAreNumberedByTheirSmallestPolygon)
 {
   // Two smooth pairs {7, 9} and {3, 8} around point 0, listed in any order: {3, 8} keeps it.
-  const std::map<vtkIdType, std::array<vtkIdType, 2>> neighbours = { { 7, { 1, 2 } },
-    { 9, { 2, 3 } }, { 3, { 4, 5 } }, { 8, { 5, 6 } } };
-  auto corners = [&](vtkIdType f, auto&& fn)
+  const std::map<vtkIdType, vtkIdType> partner = { { 7, 9 }, { 9, 7 }, { 3, 8 }, { 8, 3 } };
+  auto across = [&](vtkIdType f, auto&& fn)
   {
-    fn(neighbours.at(f)[0], neighbours.at(f)[1]);
+    fn(partner.at(f));
   };
   auto directed = [](vtkIdType)
   {
@@ -346,7 +340,7 @@ TEST(SplittingRegions, RegionsAreNumberedByTheirSmallestPolygon)
     { std::vector<vtkIdType>{ 7, 9, 3, 8 }, std::vector<vtkIdType>{ 8, 3, 9, 7 } })
   {
     phongvtk::PointRegions regions;
-    regions.Compute(0, cells.data(), 4, corners, directed, smooth);
+    regions.Compute(0, cells.data(), 4, across, directed, smooth);
     EXPECT_EQ(regions.Regions, 2);
     EXPECT_EQ(regions.LabelOf(3), 0);
     EXPECT_EQ(regions.LabelOf(8), 0);

@@ -505,7 +505,8 @@ def speed_result(vtk, pdn_cells, cells, exact, tmpn, points, in_cell_order):
           "vtkTriangleMeshPointNormals": tmpn, "vtkPolyDataNormals points": 10 * tmpn,
           "points DOUBLE": points, "points DOUBLE in cell order": in_cell_order,
           "visible area DOUBLE": cells, "visible area EXACT": exact,
-          "visible area DOUBLE + max": 3 * cells}
+          "visible area DOUBLE + max": 3 * cells, "vtkPolyDataNormals defaults": 30 * points,
+          "split + consistency DOUBLE": 2 * points, "split + consistency EXACT": 4 * points}
     mesh = {"name": "m", "cells": 8, "points": 6, "ms": ms, "floor cells ms": 1.0,
             "floor points ms": 1.0}
     return {"vtk": vtk, "backend": "Sequential", "threads": 1, "bandwidth": 1e10,
@@ -514,7 +515,7 @@ def speed_result(vtk, pdn_cells, cells, exact, tmpn, points, in_cell_order):
 
 def goal_lines(report):
     """The report's ratio lines that carry a goal, by ratio name."""
-    return {line[2:48].strip(): line for line in report.splitlines()
+    return {line[2:60].strip(): line for line in report.splitlines()
             if line.startswith("  ") and ">=" in line}
 
 
@@ -527,6 +528,9 @@ def test_speed_report_marks_each_goal_for_its_vtk_generation():
     assert lines["cells EXACT / vtkPolyDataNormals"].endswith(">= 20 NOT met")
     assert lines["points DOUBLE / vtkTriangleMeshPointNormals"].endswith(">= 5 met")
     assert "points DOUBLE / vtkPolyDataNormals points" not in lines  # no goal against 9.2
+    # Splitting and consistency against vtkPolyDataNormals' defaults: 15x (10), 7.5x (5).
+    assert lines["split + consistency DOUBLE / vtkPolyDataNormals defaults"].endswith(">= 10 met")
+    assert lines["split + consistency EXACT / vtkPolyDataNormals defaults"].endswith(">= 5 met")
     # VTK 9.6: cells 5x (4), EXACT 2.5x (2), points 1.5x TMPN (2), 15x PDN points (8).
     lines = goal_lines(speed.format_report(
         [speed_result("9.6.2", 50.0, 10.0, 20.0, 15.0, 10.0, 5.0)]))
@@ -534,6 +538,7 @@ def test_speed_report_marks_each_goal_for_its_vtk_generation():
     assert lines["cells EXACT / vtkPolyDataNormals"].endswith(">= 2 met")
     assert lines["points DOUBLE / vtkTriangleMeshPointNormals"].endswith(">= 2 NOT met")
     assert lines["points DOUBLE / vtkPolyDataNormals points"].endswith(">= 8 met")
+    assert lines["split + consistency DOUBLE / vtkPolyDataNormals defaults"].endswith(">= 3 met")
 
 
 def test_bench_exact_mode_is_faithful_on_the_sample(phongvtk_cli, sphere_off):

@@ -1,0 +1,142 @@
+/**
+ * @file PhongVTKEdgeNeighbours.h
+ * @brief Private: the polygons around every point (links) and the polygon across every edge of
+ * every polygon, for vtkPolygonNormals' Consistency and Splitting.
+ *
+ * Edge k of a polygon runs from its corner k to corner k + 1; its slot is the polygon's offset
+ * plus k, so the neighbours are laid out like the connectivity. An edge p-q is manifold when
+ * exactly two distinct polygons have it (counting each time a polygon runs along it); its two
+ * slots then hold `2 g + s`, g the polygon across and s 1 when both run along the edge the same
+ * way (they disagree in orientation), 0 otherwise. Every other slot (boundary, non-manifold, an
+ * edge from a point to itself) holds -1. Each edge is found from its smaller point, each slot
+ * written once: the same result for any number of threads.
+ */
+#ifndef PhongVTKEdgeNeighbours_h
+#define PhongVTKEdgeNeighbours_h
+
+#include "PhongVTKCells.h"
+#include "PhongVTKParallel.h"
+
+#include "vtkCellArray.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkStaticCellLinksTemplate.h"
+
+#include <algorithm>
+#include <tuple>
+#include <vector>
+
+namespace phongvtk
+{
+/// The polygons around every point (polygon indices of `polys`; every point id valid).
+using PolygonLinks = vtkStaticCellLinksTemplate<vtkIdType>;
+
+inline void BuildPolygonLinks(vtkPoints* points, vtkCellArray* polys, PolygonLinks& links)
+{
+  vtkNew<vtkPolyData> surface;
+  surface->SetPoints(points);
+  surface->SetPolys(polys);
+  links.BuildLinks(surface);
+}
+
+/// The neighbour across every edge slot of `polys` (valid point ids, `links` theirs).
+inline std::vector<vtkIdType> EdgeNeighbours(
+  vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links)
+{
+  std::vector<vtkIdType> neighbours(
+    static_cast<std::size_t>(polys->GetConnectivityArray()->GetNumberOfValues()), -1);
+  // (q, polygon, slot, +1 for p -> q or -1 for q -> p) of every edge p-q at p with q > p.
+  using Edge = std::tuple<vtkIdType, vtkIdType, vtkIdType, int>;
+  vtkSMPThreadLocal<std::vector<Edge>> scratch;
+  polys->Visit(RawCells{},
+    [&](const auto* offsets, const auto* conn)
+    {
+      phongvtk::For(0, numPoints, polys->GetNumberOfCells(),
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          std::vector<Edge>& edges = scratch.Local();
+          for (vtkIdType p = begin; p < end; ++p)
+          {
+            const vtkIdType count = links.GetNumberOfCells(p);
+            const vtkIdType* cells = links.GetCells(p);
+            edges.clear();
+            for (vtkIdType j = 0; j < count; ++j)
+            {
+              const vtkIdType f = cells[j];
+              if (std::find(cells, cells + j, f) != cells + j)
+              {
+                continue; // a polygon that uses p twice is listed twice
+              }
+              const auto* ids = conn + offsets[f];
+              const vtkIdType m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
+              for (vtkIdType k = 0; k < m; ++k)
+              {
+                if (static_cast<vtkIdType>(ids[k]) != p)
+                {
+                  continue;
+                }
+                const vtkIdType before = (k + m - 1) % m;
+                const auto next = static_cast<vtkIdType>(ids[(k + 1) % m]);
+                const auto previous = static_cast<vtkIdType>(ids[before]);
+                if (next > p)
+                {
+                  edges.emplace_back(next, f, k, +1);
+                }
+                if (previous > p)
+                {
+                  edges.emplace_back(previous, f, before, -1);
+                }
+              }
+            }
+            std::sort(edges.begin(), edges.end());
+            for (std::size_t e = 0; e < edges.size();)
+            {
+              std::size_t last = e + 1;
+              while (last < edges.size() && std::get<0>(edges[last]) == std::get<0>(edges[e]))
+              {
+                ++last;
+              }
+              const Edge& a = edges[e];
+              const Edge& b = edges[e + 1];
+              if (last - e == 2 && std::get<1>(a) != std::get<1>(b))
+              {
+                const vtkIdType same = std::get<3>(a) == std::get<3>(b) ? 1 : 0;
+                const vtkIdType fa = std::get<1>(a), fb = std::get<1>(b);
+                neighbours[static_cast<std::size_t>(offsets[fa] + std::get<2>(a))] = 2 * fb + same;
+                neighbours[static_cast<std::size_t>(offsets[fb] + std::get<2>(b))] = 2 * fa + same;
+              }
+              e = last;
+            }
+          }
+        });
+    });
+  return neighbours;
+}
+
+/**
+ * The neighbours after the polygons marked in `reverse` are reversed keeping their first point
+ * ((p0, p(n-1), ..., p1)): their new edge j is their old edge n - 1 - j. The polygons across stay
+ * right; the same-direction bits are those of before.
+ */
+inline void ReverseEdgeSlots(std::vector<vtkIdType>& neighbours, vtkCellArray* polys,
+  const std::vector<unsigned char>& reverse)
+{
+  polys->Visit(RawCells{},
+    [&](const auto* offsets, const auto*)
+    {
+      for (vtkIdType f = 0; f < polys->GetNumberOfCells(); ++f)
+      {
+        if (reverse[static_cast<std::size_t>(f)])
+        {
+          std::reverse(neighbours.begin() + offsets[f], neighbours.begin() + offsets[f + 1]);
+        }
+      }
+    });
+}
+
+} // namespace phongvtk
+
+#endif
+// VTK-HeaderTest-Exclude: PhongVTKEdgeNeighbours.h
