@@ -25,7 +25,6 @@
 #include "vtkStaticCellLinksTemplate.h"
 
 #include <algorithm>
-#include <tuple>
 #include <vector>
 
 namespace phongvtk
@@ -47,8 +46,12 @@ inline std::vector<vtkIdType> EdgeNeighbours(
 {
   std::vector<vtkIdType> neighbours(
     static_cast<std::size_t>(polys->GetConnectivityArray()->GetNumberOfValues()), -1);
-  // (q, polygon, slot, +1 for p -> q or -1 for q -> p) of every edge p-q at p with q > p.
-  using Edge = std::tuple<vtkIdType, vtkIdType, vtkIdType, int>;
+  // Every edge p-q at p with q > p: q, the polygon, its slot, and 1 for p -> q or 0 for q -> p.
+  struct Edge
+  {
+    vtkIdType Q, Polygon, Slot;
+    int Forward;
+  };
   vtkSMPThreadLocal<std::vector<Edge>> scratch;
   polys->Visit(RawCells{},
     [&](const auto* offsets, const auto* conn)
@@ -77,35 +80,43 @@ inline std::vector<vtkIdType> EdgeNeighbours(
                 {
                   continue;
                 }
-                const vtkIdType before = (k + m - 1) % m;
-                const auto next = static_cast<vtkIdType>(ids[(k + 1) % m]);
+                const vtkIdType before = k == 0 ? m - 1 : k - 1;
+                const auto next = static_cast<vtkIdType>(ids[k + 1 == m ? 0 : k + 1]);
                 const auto previous = static_cast<vtkIdType>(ids[before]);
                 if (next > p)
                 {
-                  edges.emplace_back(next, f, k, +1);
+                  edges.push_back({ next, f, k, 1 });
                 }
                 if (previous > p)
                 {
-                  edges.emplace_back(previous, f, before, -1);
+                  edges.push_back({ previous, f, before, 0 });
                 }
               }
             }
-            std::sort(edges.begin(), edges.end());
+            // A handful of edges: insertion sort by q.
+            for (std::size_t i = 1; i < edges.size(); ++i)
+            {
+              for (std::size_t j = i; j > 0 && edges[j - 1].Q > edges[j].Q; --j)
+              {
+                std::swap(edges[j - 1], edges[j]);
+              }
+            }
             for (std::size_t e = 0; e < edges.size();)
             {
               std::size_t last = e + 1;
-              while (last < edges.size() && std::get<0>(edges[last]) == std::get<0>(edges[e]))
+              while (last < edges.size() && edges[last].Q == edges[e].Q)
               {
                 ++last;
               }
               const Edge& a = edges[e];
               const Edge& b = edges[e + 1];
-              if (last - e == 2 && std::get<1>(a) != std::get<1>(b))
+              if (last - e == 2 && a.Polygon != b.Polygon)
               {
-                const vtkIdType same = std::get<3>(a) == std::get<3>(b) ? 1 : 0;
-                const vtkIdType fa = std::get<1>(a), fb = std::get<1>(b);
-                neighbours[static_cast<std::size_t>(offsets[fa] + std::get<2>(a))] = 2 * fb + same;
-                neighbours[static_cast<std::size_t>(offsets[fb] + std::get<2>(b))] = 2 * fa + same;
+                const vtkIdType same = a.Forward == b.Forward ? 1 : 0;
+                neighbours[static_cast<std::size_t>(offsets[a.Polygon] + a.Slot)] =
+                  2 * b.Polygon + same;
+                neighbours[static_cast<std::size_t>(offsets[b.Polygon] + b.Slot)] =
+                  2 * a.Polygon + same;
               }
               e = last;
             }
