@@ -52,26 +52,31 @@ inline std::vector<vtkIdType> EdgeNeighbours(
     vtkIdType Q, Polygon, Slot;
     int Forward;
   };
-  vtkSMPThreadLocal<std::vector<Edge>> scratch;
+  struct Scratch
+  {
+    std::vector<Edge> Edges;
+    std::vector<vtkIdType> Faces;
+  };
+  vtkSMPThreadLocal<Scratch> scratch;
   polys->Visit(RawCells{},
     [&](const auto* offsets, const auto* conn)
     {
       phongvtk::For(0, numPoints, polys->GetNumberOfCells(),
         [&](vtkIdType begin, vtkIdType end)
         {
-          std::vector<Edge>& edges = scratch.Local();
+          Scratch& local = scratch.Local();
+          std::vector<Edge>& edges = local.Edges;
+          std::vector<vtkIdType>& faces = local.Faces;
           for (vtkIdType p = begin; p < end; ++p)
           {
-            const vtkIdType count = links.GetNumberOfCells(p);
             const vtkIdType* cells = links.GetCells(p);
+            // A polygon that uses p twice is listed twice: each once, in any order of the links.
+            faces.assign(cells, cells + links.GetNumberOfCells(p));
+            std::sort(faces.begin(), faces.end());
+            faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
             edges.clear();
-            for (vtkIdType j = 0; j < count; ++j)
+            for (const vtkIdType f : faces)
             {
-              const vtkIdType f = cells[j];
-              if (std::find(cells, cells + j, f) != cells + j)
-              {
-                continue; // a polygon that uses p twice is listed twice
-              }
               const auto* ids = conn + offsets[f];
               const vtkIdType m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
               for (vtkIdType k = 0; k < m; ++k)
@@ -93,14 +98,8 @@ inline std::vector<vtkIdType> EdgeNeighbours(
                 }
               }
             }
-            // A handful of edges: insertion sort by q.
-            for (std::size_t i = 1; i < edges.size(); ++i)
-            {
-              for (std::size_t j = i; j > 0 && edges[j - 1].Q > edges[j].Q; --j)
-              {
-                std::swap(edges[j - 1], edges[j]);
-              }
-            }
+            std::sort(
+              edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.Q < b.Q; });
             for (std::size_t e = 0; e < edges.size();)
             {
               std::size_t last = e + 1;
@@ -108,10 +107,10 @@ inline std::vector<vtkIdType> EdgeNeighbours(
               {
                 ++last;
               }
-              const Edge& a = edges[e];
-              const Edge& b = edges[e + 1];
-              if (last - e == 2 && a.Polygon != b.Polygon)
+              if (last - e == 2 && edges[e].Polygon != edges[e + 1].Polygon)
               {
+                const Edge& a = edges[e];
+                const Edge& b = edges[e + 1];
                 const vtkIdType same = a.Forward == b.Forward ? 1 : 0;
                 neighbours[static_cast<std::size_t>(offsets[a.Polygon] + a.Slot)] =
                   2 * b.Polygon + same;

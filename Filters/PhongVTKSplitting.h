@@ -286,9 +286,9 @@ SplitPolygons SplitAtSharpEdges(vtkPoints* points, vtkCellArray* polys, PolygonL
 
 /**
  * The mesh after splitting: `input` with the copies appended to its points (every point array
- * copied to them, as VTK copies point data, every attribute included), its polygons replaced by
- * the split ones, and, with `originalIds`, the point array `OriginalPointIds`. Everything else is
- * shared with `input`.
+ * copied to them, a global id array too, which then is no longer the GlobalIds attribute), its
+ * polygons replaced by the split ones, and, with `originalIds`, the point array
+ * `OriginalPointIds`. Everything else is shared with `input`.
  */
 inline vtkSmartPointer<vtkPolyData> MeshWithCopies(
   vtkPolyData* input, const SplitPolygons& split, bool originalIds)
@@ -319,6 +319,10 @@ inline vtkSmartPointer<vtkPolyData> MeshWithCopies(
     pointData->CopyAllocate(input->GetPointData(), n + m);
     pointData->CopyData(input->GetPointData(), 0, n, 0);
     pointData->CopyData(input->GetPointData(), from, to);
+    // A copy carries its point's global id: the ids are no longer unique, so the array stays
+    // (nothing is lost; OriginalPointIds says which point is which) but is no longer the
+    // GlobalIds attribute, which promises uniqueness.
+    pointData->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS);
     out->GetPointData()->ShallowCopy(pointData);
     out->SetPolys(split.Polys);
   }

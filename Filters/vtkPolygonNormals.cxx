@@ -894,10 +894,13 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
   }
   if (nonOrientable > 0)
   {
-    const vtkIdType firstPoly = source->GetNumberOfVerts() + source->GetNumberOfLines();
-    if (auto* status =
-          vtkUnsignedCharArray::SafeDownCast(output->GetCellData()->GetArray("NormalStatus")))
+    // The status array Dispatch made (it replaced any input array of that name), never another.
+    auto* status = this->ComputeNormalStatus
+      ? vtkUnsignedCharArray::SafeDownCast(output->GetCellData()->GetArray("NormalStatus"))
+      : nullptr;
+    if (status)
     {
+      const vtkIdType firstPoly = source->GetNumberOfVerts() + source->GetNumberOfLines();
       for (vtkIdType f : clashes)
       {
         unsigned char& value = status->GetPointer(0)[firstPoly + f];
@@ -908,8 +911,8 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
                     << " connected component(s) are not orientable: their polygons cannot all "
                        "agree; "
                     << clashes.size()
-                    << " polygon(s) along the edges where they still disagree have NormalStatus "
-                       "4.");
+                    << " polygon(s) lie along the edges where they still disagree (NormalStatus "
+                       "4 with ComputeNormalStatus).");
   }
   if (nonFinite > 0)
   {

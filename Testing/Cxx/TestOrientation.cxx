@@ -277,6 +277,21 @@ TEST(Orientation, MoebiusStripIsReportedAndItsSeamFlagged)
     flagged += status->GetValue(c) == 4;
   }
   EXPECT_EQ(flagged, 2) << "the two quads along the seam";
+  // Without ComputeNormalStatus nothing is written, not even into a NormalStatus array that came
+  // with the input.
+  vtkNew<MessageObserver> again;
+  auto second = RunFilter(
+    out, [](vtkPolygonNormals* f) { f->ConsistencyOn(); }, again);
+  EXPECT_EQ(again->Warnings.size(), 1u);
+  EXPECT_EQ(second->GetCellData()->GetArray("NormalStatus"), status);
+  vtkIdType stillFlagged = 0;
+  for (vtkIdType c = 0; c < status->GetNumberOfTuples(); ++c)
+  {
+    stillFlagged += status->GetValue(c) == 4;
+  }
+  EXPECT_EQ(stillFlagged, 2);
+  auto plain = RunFilter(strip, [](vtkPolygonNormals* f) { f->ConsistencyOn(); });
+  EXPECT_EQ(plain->GetCellData()->GetArray("NormalStatus"), nullptr);
   // An orientable strip (no twist) gives neither warning nor flag.
   Cells ring;
   ring.Polys = PolygonsOf(strip);

@@ -634,6 +634,13 @@ TEST(Splitting, PointArraysAreCopiedAndEverythingElsePasses)
   }
   cube->GetPointData()->SetScalars(scalars);
   cube->GetPointData()->AddArray(labels);
+  vtkNew<vtkIdTypeArray> globalIds;
+  globalIds->SetName("GlobalIds");
+  for (vtkIdType i = 0; i < 8; ++i)
+  {
+    globalIds->InsertNextValue(1000 + i);
+  }
+  cube->GetPointData()->SetGlobalIds(globalIds);
   cube->GetCellData()->AddArray(cellIds);
   vtkNew<vtkIntArray> field;
   field->SetName("run");
@@ -656,6 +663,16 @@ TEST(Splitting, PointArraysAreCopiedAndEverythingElsePasses)
     EXPECT_EQ(outScalars->GetComponent(i, 1), scalars->GetComponent(from, 1));
     EXPECT_EQ(outLabels->GetValue(i), labels->GetValue(from));
   }
+  // Global ids are kept, copies carrying their point's, but are no longer unique, so no longer
+  // the GlobalIds attribute.
+  auto* outGlobal = vtkIdTypeArray::SafeDownCast(out->GetPointData()->GetArray("GlobalIds"));
+  ASSERT_NE(outGlobal, nullptr);
+  EXPECT_EQ(out->GetPointData()->GetGlobalIds(), nullptr);
+  for (vtkIdType i = 0; i < 24; ++i)
+  {
+    EXPECT_EQ(outGlobal->GetValue(i), 1000 + original->GetValue(i));
+  }
+  EXPECT_EQ(cube->GetPointData()->GetGlobalIds(), globalIds.GetPointer());
   // Lines and vertices keep their ids; cell and field data pass.
   EXPECT_EQ(out->GetLines(), lines.GetPointer());
   EXPECT_EQ(out->GetVerts(), verts.GetPointer());
@@ -665,6 +682,35 @@ TEST(Splitting, PointArraysAreCopiedAndEverythingElsePasses)
   EXPECT_EQ(cube->GetNumberOfPoints(), 8);
   EXPECT_EQ(cube->GetPointData()->GetArray("OriginalPointIds"), nullptr);
   EXPECT_EQ(PolygonsOf(cube)[0], (Cell{ 0, 2, 3, 1 }));
+}
+
+TEST(Splitting, AHubOf200000TrianglesSplitsWhereItsFanIsSharp)
+{
+  // A fan around point 0 closing on itself: 200,000 triangles on a cone whose rim is raised to a
+  // spike every quarter turn. The two thin triangles at a spike face sideways, opposite each
+  // other and at 90 degrees to the cone: each is a region of its own at the hub, which has 4 arcs
+  // of cone and 8 such triangles around it (11 copies); at the rim the spike and its two
+  // neighbours each split once (3 copies a spike).
+  const int n = 200000;
+  std::vector<Point> p = { { 0, 0, 1 } };
+  for (int i = 0; i < n; ++i)
+  {
+    const double t = 2.0 * M_PI * i / n;
+    const double z = i % 50000 == 0 ? 3.0 : 0.0; // a spike every quarter turn
+    p.push_back({ std::cos(t), std::sin(t), z });
+  }
+  Cells cells;
+  for (int i = 0; i < n; ++i)
+  {
+    cells.Polys.push_back({ 0, 1 + i, 1 + (i + 1) % n });
+  }
+  auto fan = MakePolyData(p, cells);
+  for (bool consistency : { false, true })
+  {
+    auto out = Split(fan, vtkPolygonNormals::DOUBLE, 30.0,
+      [consistency](vtkPolygonNormals* f) { f->SetConsistency(consistency); });
+    EXPECT_EQ(out->GetNumberOfPoints(), n + 1 + 11 + 4 * 3) << consistency;
+  }
 }
 
 TEST(Splitting, StripsKeepTheirPointIds)
