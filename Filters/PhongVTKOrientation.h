@@ -6,8 +6,8 @@
  * Two polygons sharing a manifold edge (exactly two polygons have it) agree when they run along
  * it in opposite directions. Each connected component (polygons joined by manifold edges) keeps
  * the order of its first polygon, and every other polygon is reversed or not so that it agrees
- * with its neighbours: a breadth-first walk from that polygon, neighbours in increasing order, so
- * the result does not depend on the thread count. On an orientable component the answer is
+ * with its neighbours: the edges are taken one by one in the polygons' order, so the result does
+ * not depend on the thread count. On an orientable component the answer is
  * unique (and so independent of the cell order but for the choice of the first polygon); on a
  * non-orientable one (a Moebius strip) some edges must disagree, and the polygons along them are
  * reported. A polygon is reversed keeping its first point: (p0, p(n-1), ..., p1), so that its
@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <tuple>
 #include <vector>
 
@@ -50,64 +51,89 @@ struct Orientation
  * along in opposite directions, each component keeping the order of its first polygon; a
  * component where that is impossible is counted and the polygons of every pair left disagreeing
  * are listed.
+ *
+ * A union-find with parity over the edges in slot order (the neighbours are read once, in
+ * memory order: a breadth-first walk waited on the memory for most of its time): a set's root
+ * is its smallest polygon, which keeps its order, and every polygon's parity to the root says
+ * whether it is reversed. An edge between two polygons already in one set whose parities
+ * disagree is where a non-orientable component cannot agree.
  */
 template <class Offsets>
 Orientation ConsistentOrientation(
   vtkIdType numPolys, const Offsets* offsets, const std::vector<vtkIdType>& neighbours)
 {
-  Orientation result;
-  result.Reverse.assign(static_cast<std::size_t>(numPolys), 0);
-  std::vector<unsigned char> visited(static_cast<std::size_t>(numPolys), 0);
-  std::vector<vtkIdType> wave;
-  wave.reserve(static_cast<std::size_t>(numPolys));
-  for (vtkIdType seed = 0; seed < numPolys; ++seed)
+  std::vector<vtkIdType> parent(static_cast<std::size_t>(numPolys));
+  std::iota(parent.begin(), parent.end(), vtkIdType(0));
+  std::vector<unsigned char> parity(static_cast<std::size_t>(numPolys), 0);   // to the parent
+  std::vector<unsigned char> clashing(static_cast<std::size_t>(numPolys), 0); // roots only
+  // The root of f and f's parity to it, compressing the path.
+  auto find = [&](vtkIdType f, unsigned char& toRoot)
   {
-    if (visited[static_cast<std::size_t>(seed)])
+    vtkIdType root = f;
+    unsigned char total = 0;
+    while (parent[static_cast<std::size_t>(root)] != root)
     {
-      continue;
+      total ^= parity[static_cast<std::size_t>(root)];
+      root = parent[static_cast<std::size_t>(root)];
     }
-    visited[static_cast<std::size_t>(seed)] = 1;
-    wave.assign(1, seed);
-    bool clash = false;
-    for (std::size_t w = 0; w < wave.size(); ++w)
+    toRoot = total;
+    // Second walk: point every node at the root with its own parity to it.
+    while (parent[static_cast<std::size_t>(f)] != root)
     {
-      const vtkIdType f = wave[w];
-      const unsigned char reverseF = result.Reverse[static_cast<std::size_t>(f)];
-      for (auto k = static_cast<vtkIdType>(offsets[f]); k < static_cast<vtkIdType>(offsets[f + 1]);
-           ++k)
+      const vtkIdType next = parent[static_cast<std::size_t>(f)];
+      const unsigned char own = parity[static_cast<std::size_t>(f)];
+      parent[static_cast<std::size_t>(f)] = root;
+      parity[static_cast<std::size_t>(f)] = total;
+      total ^= own;
+      f = next;
+    }
+    return root;
+  };
+  Orientation result;
+  for (vtkIdType f = 0; f < numPolys; ++f)
+  {
+    for (auto k = static_cast<vtkIdType>(offsets[f]); k < static_cast<vtkIdType>(offsets[f + 1]);
+         ++k)
+    {
+      const vtkIdType n = neighbours[static_cast<std::size_t>(k)];
+      const vtkIdType g = n >> 1;
+      if (n < 0 || g < f)
       {
-        const vtkIdType n = neighbours[static_cast<std::size_t>(k)];
-        if (n < 0)
-        {
-          continue;
-        }
-        const vtkIdType polygon = n >> 1;
-        const auto g = static_cast<std::size_t>(polygon);
-        // Same direction: exactly one of the two must be reversed.
-        const unsigned char wanted = reverseF ^ static_cast<unsigned char>(n & 1);
-        if (!visited[g])
-        {
-          visited[g] = 1;
-          result.Reverse[g] = wanted;
-          wave.push_back(polygon);
-        }
-        else if (result.Reverse[g] != wanted && f < polygon)
-        {
-          clash = true;
-          result.Clashes.push_back(f);
-          result.Clashes.push_back(polygon);
-        }
+        continue; // no neighbour, or the edge was taken from g's side
       }
+      // Same direction: exactly one of the two must be reversed.
+      const auto same = static_cast<unsigned char>(n & 1);
+      unsigned char pf, pg;
+      const vtkIdType rf = find(f, pf);
+      const vtkIdType rg = find(g, pg);
+      if (rf == rg)
+      {
+        if ((pf ^ pg) != same)
+        {
+          clashing[static_cast<std::size_t>(rf)] = 1;
+          result.Clashes.push_back(f);
+          result.Clashes.push_back(g);
+        }
+        continue;
+      }
+      const vtkIdType low = std::min(rf, rg), high = std::max(rf, rg);
+      parent[static_cast<std::size_t>(high)] = low;
+      parity[static_cast<std::size_t>(high)] = pf ^ pg ^ same;
+      clashing[static_cast<std::size_t>(low)] |= clashing[static_cast<std::size_t>(high)];
     }
-    result.NonOrientable += clash;
+  }
+  result.Reverse.resize(static_cast<std::size_t>(numPolys));
+  for (vtkIdType f = 0; f < numPolys; ++f)
+  {
+    unsigned char toRoot;
+    const vtkIdType root = find(f, toRoot);
+    result.Reverse[static_cast<std::size_t>(f)] = toRoot;
+    result.Reversed += toRoot;
+    result.NonOrientable += root == f && clashing[static_cast<std::size_t>(f)];
   }
   std::sort(result.Clashes.begin(), result.Clashes.end());
   result.Clashes.erase(
     std::unique(result.Clashes.begin(), result.Clashes.end()), result.Clashes.end());
-  for (unsigned char r : result.Reverse)
-  {
-    result.Reversed += r;
-  }
   return result;
 }
 
