@@ -166,8 +166,9 @@ SplitPolygons SplitAtSharpEdges(vtkPoints* points, vtkCellArray* polys, PolygonL
     {
       if (static_cast<vtkIdType>(ids[k]) == p)
       {
-        fn(k, static_cast<vtkIdType>(ids[(k + m - 1) % m]),
-          static_cast<vtkIdType>(ids[(k + 1) % m]));
+        // (No division: its latency showed in the profile.)
+        fn(k, static_cast<vtkIdType>(ids[k == 0 ? m - 1 : k - 1]),
+          static_cast<vtkIdType>(ids[k + 1 == m ? 0 : k + 1]));
       }
     }
   };
@@ -203,7 +204,7 @@ SplitPolygons SplitAtSharpEdges(vtkPoints* points, vtkCellArray* polys, PolygonL
                   [&](vtkIdType k, vtkIdType, vtkIdType)
                   {
                     // The edges k (to the next corner) and k - 1 (from the previous one).
-                    for (vtkIdType slot : { k, (k + m - 1) % m })
+                    for (vtkIdType slot : { k, k == 0 ? m - 1 : k - 1 })
                     {
                       const vtkIdType across = neighbours[static_cast<std::size_t>(
                         static_cast<vtkIdType>(offsets[f]) + slot)];
