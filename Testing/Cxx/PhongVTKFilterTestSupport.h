@@ -10,10 +10,13 @@
 
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkIdList.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
 
 #include <string>
 #include <vector>
@@ -101,6 +104,33 @@ inline vtkSmartPointer<vtkPolyData> Transformed(
   out->CopyStructure(mesh);
   out->SetPoints(pts);
   return out;
+}
+
+/// The point ids of every polygon of `mesh`.
+inline std::vector<Cell> PolygonsOf(vtkPolyData* mesh)
+{
+  std::vector<Cell> polys;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetPolys()->GetNumberOfCells(); ++c)
+  {
+    mesh->GetPolys()->GetCellAtId(c, ids);
+    polys.emplace_back(ids->begin(), ids->end());
+  }
+  return polys;
+}
+
+/// vtkSphereSource's closed, outward sphere of triangles with double points and no point data.
+inline vtkSmartPointer<vtkPolyData> SphereMesh(int resolution)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(resolution);
+  source->SetPhiResolution(resolution);
+  source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  source->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->DeepCopy(source->GetOutput());
+  mesh->GetPointData()->Initialize();
+  return mesh;
 }
 
 /// Receives the error and warning events of a filter (what vtkTest::ErrorObserver does).

@@ -40,18 +40,8 @@ using phongvtk_test::Cells;
 using phongvtk_test::MakePolyData;
 using phongvtk_test::MessageObserver;
 using phongvtk_test::Point;
-
-std::vector<Cell> PolygonsOf(vtkPolyData* mesh)
-{
-  std::vector<Cell> polys;
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < mesh->GetPolys()->GetNumberOfCells(); ++c)
-  {
-    mesh->GetPolys()->GetCellAtId(c, ids);
-    polys.emplace_back(ids->begin(), ids->end());
-  }
-  return polys;
-}
+using phongvtk_test::PolygonsOf;
+using phongvtk_test::SphereMesh;
 
 /// The filter with `configure`, its warnings and errors collected.
 vtkSmartPointer<vtkPolyData> RunFilter(vtkPolyData* input,
@@ -66,20 +56,6 @@ vtkSmartPointer<vtkPolyData> RunFilter(vtkPolyData* input,
   auto output = vtkSmartPointer<vtkPolyData>::New();
   output->ShallowCopy(filter->GetOutput());
   return output;
-}
-
-/// A closed sphere of triangles, outward, double points.
-vtkSmartPointer<vtkPolyData> Sphere(int resolution)
-{
-  vtkNew<vtkSphereSource> source;
-  source->SetThetaResolution(resolution);
-  source->SetPhiResolution(resolution);
-  source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-  source->Update();
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->DeepCopy(source->GetOutput());
-  mesh->GetPointData()->Initialize();
-  return mesh;
 }
 
 /// `mesh` with a random share of its polygons reversed: VTK's way (the whole list backwards) or,
@@ -168,7 +144,7 @@ void ExpectSameBits(vtkDataArray* a, vtkDataArray* b, const std::string& what)
 
 TEST(Orientation, RandomReversalsOfAClosedSurfaceAreUndone)
 {
-  auto sphere = Sphere(40);
+  auto sphere = SphereMesh(40);
   ASSERT_EQ(DisagreeingEdges(sphere), 0);
   std::vector<bool> reversed;
   auto scrambled = RandomlyReversed(sphere, 0.3, 1, &reversed, true);
@@ -316,7 +292,7 @@ TEST(Orientation, NonManifoldEdgesImposeNothing)
 
 TEST(Orientation, FlipNormalsTurnsTheCellsAndEveryNormalTogether)
 {
-  auto sphere = Sphere(30);
+  auto sphere = SphereMesh(30);
   for (bool consistency : { false, true })
   {
     auto configure = [consistency](vtkPolygonNormals* f)
@@ -358,7 +334,7 @@ TEST(Orientation, FlipNormalsTurnsTheCellsAndEveryNormalTogether)
 
 TEST(Orientation, SameOutputForEveryBackendAndThreadCount)
 {
-  auto scrambled = RandomlyReversed(Sphere(300), 0.4, 3); // 179,400 triangles
+  auto scrambled = RandomlyReversed(SphereMesh(300), 0.4, 3); // 179,400 triangles
   const std::string original = vtkSMPTools::GetBackend();
   std::vector<vtkSmartPointer<vtkPolyData>> outputs;
   for (const auto& config : std::vector<std::pair<const char*, int>>{

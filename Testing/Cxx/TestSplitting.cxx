@@ -47,6 +47,7 @@ using phongvtk_test::Cells;
 using phongvtk_test::MakePolyData;
 using phongvtk_test::MessageObserver;
 using phongvtk_test::Point;
+using phongvtk_test::PolygonsOf;
 
 constexpr int Modes[] = { vtkPolygonNormals::FAST, vtkPolygonNormals::DOUBLE,
   vtkPolygonNormals::COMPENSATED, vtkPolygonNormals::EXACT };
@@ -137,14 +138,7 @@ vtkSmartPointer<vtkPolyData> FlatGrid(int n)
 /// A sphere whose points are moved radially at random: many edges either side of 30 degrees.
 vtkSmartPointer<vtkPolyData> RoughSphere(int resolution, double roughness, unsigned seed = 11)
 {
-  vtkNew<vtkSphereSource> source;
-  source->SetThetaResolution(resolution);
-  source->SetPhiResolution(resolution);
-  source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-  source->Update();
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->DeepCopy(source->GetOutput());
-  mesh->GetPointData()->Initialize();
+  auto mesh = phongvtk_test::SphereMesh(resolution);
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> uniform(1.0 - roughness, 1.0 + roughness);
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
@@ -155,20 +149,6 @@ vtkSmartPointer<vtkPolyData> RoughSphere(int resolution, double roughness, unsig
     mesh->GetPoints()->SetPoint(i, s * x[0], s * x[1], s * x[2]);
   }
   return mesh;
-}
-
-/// The polygons' point ids of a mesh.
-std::vector<Cell> PolygonsOf(vtkPolyData* mesh)
-{
-  std::vector<Cell> polys;
-  vtkCellArray* cells = mesh->GetPolys();
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
-  {
-    cells->GetCellAtId(c, ids);
-    polys.emplace_back(ids->begin(), ids->end());
-  }
-  return polys;
 }
 
 /**
