@@ -83,14 +83,7 @@ const char* WeightingName(int weighting)
 /// random amount of relative size `jitter`: irregular but smooth triangles.
 vtkSmartPointer<vtkPolyData> JitteredSphere(int resolution, double jitter, unsigned seed = 7)
 {
-  vtkNew<vtkSphereSource> source;
-  source->SetThetaResolution(resolution);
-  source->SetPhiResolution(resolution);
-  source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-  source->Update();
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->DeepCopy(source->GetOutput());
-  mesh->GetPointData()->Initialize(); // vtkSphereSource's own normals are not part of the test
+  auto mesh = phongvtk_test::SphereMesh(resolution);
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> uniform(-jitter, jitter);
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
