@@ -40,6 +40,27 @@ inline void BuildPolygonLinks(vtkPoints* points, vtkCellArray* polys, PolygonLin
   links.BuildLinks(surface);
 }
 
+/**
+ * Calls fn(k, previous, next) for every corner k of polygon f (of the cell array's `offsets` and
+ * `conn`) at point p, with the point ids before and after it. No division: its latency showed in
+ * the profile of the splitting.
+ */
+template <class Offsets, class Connectivity, class Fn>
+inline void ForCornersAt(
+  const Offsets* offsets, const Connectivity* conn, vtkIdType f, vtkIdType p, Fn&& fn)
+{
+  const Connectivity* ids = conn + offsets[f];
+  const auto m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
+  for (vtkIdType k = 0; k < m; ++k)
+  {
+    if (static_cast<vtkIdType>(ids[k]) == p)
+    {
+      fn(k, static_cast<vtkIdType>(ids[k == 0 ? m - 1 : k - 1]),
+        static_cast<vtkIdType>(ids[k + 1 == m ? 0 : k + 1]));
+    }
+  }
+}
+
 /// The neighbour across every edge slot of `polys` (valid point ids, `links` theirs).
 inline std::vector<vtkIdType> EdgeNeighbours(
   vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links)
@@ -77,26 +98,19 @@ inline std::vector<vtkIdType> EdgeNeighbours(
             edges.clear();
             for (const vtkIdType f : faces)
             {
-              const auto* ids = conn + offsets[f];
-              const vtkIdType m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
-              for (vtkIdType k = 0; k < m; ++k)
-              {
-                if (static_cast<vtkIdType>(ids[k]) != p)
+              const auto m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
+              ForCornersAt(offsets, conn, f, p,
+                [&](vtkIdType k, vtkIdType previous, vtkIdType next)
                 {
-                  continue;
-                }
-                const vtkIdType before = k == 0 ? m - 1 : k - 1;
-                const auto next = static_cast<vtkIdType>(ids[k + 1 == m ? 0 : k + 1]);
-                const auto previous = static_cast<vtkIdType>(ids[before]);
-                if (next > p)
-                {
-                  edges.push_back({ next, f, k, 1 });
-                }
-                if (previous > p)
-                {
-                  edges.push_back({ previous, f, before, 0 });
-                }
-              }
+                  if (next > p)
+                  {
+                    edges.push_back({ next, f, k, 1 });
+                  }
+                  if (previous > p)
+                  {
+                    edges.push_back({ previous, f, k == 0 ? m - 1 : k - 1, 0 });
+                  }
+                });
             }
             std::sort(
               edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.Q < b.Q; });

@@ -21,17 +21,11 @@
 #include "PhongVTKParallel.h"
 
 #include "vtkCellArray.h"
-#include "vtkNew.h"
-#include "vtkPoints.h"
-#include "vtkPolyData.h"
-#include "vtkSMPThreadLocal.h"
-#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
-#include <tuple>
 #include <vector>
 
 namespace phongvtk

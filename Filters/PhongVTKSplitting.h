@@ -157,22 +157,6 @@ SplitPolygons SplitAtSharpEdges(vtkPoints* points, vtkCellArray* polys, PolygonL
   const vtkIdType numPoints = points->GetNumberOfPoints();
   const vtkIdType numPolys = polys->GetNumberOfCells();
 
-  // The corners of polygon f at point p: (previous, next) point ids of each.
-  auto forCorners = [](const auto* offsets, const auto* conn, vtkIdType f, vtkIdType p, auto&& fn)
-  {
-    const auto* ids = conn + offsets[f];
-    const vtkIdType m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
-    for (vtkIdType k = 0; k < m; ++k)
-    {
-      if (static_cast<vtkIdType>(ids[k]) == p)
-      {
-        // (No division: its latency showed in the profile.)
-        fn(k, static_cast<vtkIdType>(ids[k == 0 ? m - 1 : k - 1]),
-          static_cast<vtkIdType>(ids[k + 1 == m ? 0 : k + 1]));
-      }
-    }
-  };
-
   // First pass: each point's regions; the label of every link (point, polygon) is kept.
   const vtkIdType linkCount = links.GetLinksSize();
   std::vector<std::int32_t> linkLabel(static_cast<std::size_t>(linkCount));
@@ -200,7 +184,7 @@ SplitPolygons SplitAtSharpEdges(vtkPoints* points, vtkCellArray* polys, PolygonL
               [&](vtkIdType f, auto&& fn)
               {
                 const vtkIdType m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
-                forCorners(offsets, conn, f, p,
+                ForCornersAt(offsets, conn, f, p,
                   [&](vtkIdType k, vtkIdType, vtkIdType)
                   {
                     // The edges k (to the next corner) and k - 1 (from the previous one).
@@ -274,7 +258,7 @@ SplitPolygons SplitAtSharpEdges(vtkPoints* points, vtkCellArray* polys, PolygonL
                     continue;
                   }
                   const vtkIdType f = cells[j];
-                  forCorners(offsets, conn, f, p,
+                  ForCornersAt(offsets, conn, f, p,
                     [&](vtkIdType k, vtkIdType, vtkIdType)
                     { outConn[outOffsets[f] + k] = static_cast<Id>(start + label - 1); });
                 }
