@@ -1,5 +1,5 @@
-// Exact fallbacks of the EXACT accuracy mode: the area vector, the visible area and the
-// feature-angle decision in GMP integer arithmetic.
+// Exact fallbacks of the EXACT accuracy mode: the area vector, the visible area, the
+// feature-angle decision and AutoOrientNormals' flux in GMP integer arithmetic.
 //
 // Every finite double is m * 2^e with an integer m of at most 53 bits. Scaling the whole polygon
 // by 2^-emin (emin the smallest such e) turns every coordinate into an integer, so differences,
@@ -7,6 +7,7 @@
 // polygons the double-double filter cannot certify come here (exact cancellation, coordinates
 // outside the safe exponent window), so clarity wins over speed.
 #include "PhongVTKAreaVector.h"
+#include "PhongVTKAutoOrient.h"
 #include "PhongVTKFeatureAngle.h"
 #include "PhongVTKVisibleArea.h"
 
@@ -302,6 +303,52 @@ bool ExactFeatureEdgeIsSharp(
   mpz_mul(rhs.get(), rhs.get(), m.get());
   const int order = mpz_cmp(lhs.get(), rhs.get());
   return c > 0.0 ? order <= 0 : order >= 0;
+}
+
+int ExactOrientedFluxSign(const double* xyz, const std::int64_t* sizes, const signed char* signs,
+  std::int64_t numPolygons, const double r[3])
+{
+  // One scale for every point and r: W_f in units of 2^(2 emin), (P0 - R) . W_f in 2^(3 emin).
+  std::int64_t numPoints = 0;
+  for (std::int64_t f = 0; f < numPolygons; ++f)
+  {
+    numPoints += sizes[f];
+  }
+  const int emin = LowestExponent(r, 3, LowestExponent(xyz, 3 * numPoints));
+  if (emin == INT_MAX)
+  {
+    return 0; // every coordinate zero
+  }
+  std::array<Integer, 3> rs, w;
+  for (int c = 0; c < 3; ++c)
+  {
+    SetScaled(rs[c].get(), r[c], emin);
+  }
+  Integer total, d;
+  const double* p = xyz;
+  for (std::int64_t f = 0; f < numPolygons; p += 3 * sizes[f], ++f)
+  {
+    if (sizes[f] < 3)
+    {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      mpz_set_ui(w[c].get(), 0);
+    }
+    ExactIntegerAreaVector(p, sizes[f], emin, w);
+    for (int c = 0; c < 3; ++c)
+    {
+      SetScaled(d.get(), p[c], emin);
+      mpz_sub(d.get(), d.get(), rs[c].get());
+      if (signs[f] < 0)
+      {
+        mpz_neg(d.get(), d.get());
+      }
+      mpz_addmul(total.get(), d.get(), w[c].get());
+    }
+  }
+  return mpz_sgn(total.get());
 }
 
 } // namespace detail

@@ -37,6 +37,10 @@ struct Orientation
   vtkIdType Reversed = 0;
   vtkIdType NonOrientable = 0;    // components whose polygons cannot all agree
   std::vector<vtkIdType> Clashes; // polygons along an edge where they still disagree, sorted
+  // The connected components (polygons joined by manifold edges), numbered in the order of
+  // their smallest polygon: each polygon's component, and whether each is non-orientable.
+  std::vector<vtkIdType> Component;
+  std::vector<unsigned char> ComponentClashes;
 };
 
 /**
@@ -117,13 +121,25 @@ Orientation ConsistentOrientation(
     }
   }
   result.Reverse.resize(static_cast<std::size_t>(numPolys));
+  result.Component.resize(static_cast<std::size_t>(numPolys));
   for (vtkIdType f = 0; f < numPolys; ++f)
   {
     unsigned char toRoot;
     const vtkIdType root = find(f, toRoot);
     result.Reverse[static_cast<std::size_t>(f)] = toRoot;
     result.Reversed += toRoot;
-    result.NonOrientable += root == f && clashing[static_cast<std::size_t>(f)];
+    if (root == f) // a root comes before every other polygon of its component
+    {
+      result.Component[static_cast<std::size_t>(f)] =
+        static_cast<vtkIdType>(result.ComponentClashes.size());
+      result.ComponentClashes.push_back(clashing[static_cast<std::size_t>(f)]);
+      result.NonOrientable += clashing[static_cast<std::size_t>(f)];
+    }
+    else
+    {
+      result.Component[static_cast<std::size_t>(f)] =
+        result.Component[static_cast<std::size_t>(root)];
+    }
   }
   std::sort(result.Clashes.begin(), result.Clashes.end());
   result.Clashes.erase(

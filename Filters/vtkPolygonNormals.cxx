@@ -1,6 +1,7 @@
 #include "vtkPolygonNormals.h"
 
 #include "PhongVTKAreaVector.h"
+#include "PhongVTKAutoOrient.h"
 #include "PhongVTKCells.h"
 #include "PhongVTKFeatureAngle.h"
 #include "PhongVTKOptions.h"
@@ -645,10 +646,10 @@ vtkIdType FirstInvalidCell(vtkPolyData* input)
 }
 
 /**
- * Consistency and FlipNormals: `input` with its polygons reordered (PhongVTKOrientation.h);
- * `clashes` the polygons left disagreeing on a non-orientable component, `nonOrientable` the
- * number of such components. Every point id is valid. With Consistency, `adjacency` is built and
- * follows the reordering.
+ * Consistency, AutoOrientNormals and FlipNormals: `input` with its polygons reordered
+ * (PhongVTKOrientation.h, PhongVTKAutoOrient.h); `clashes` the polygons left disagreeing on a
+ * non-orientable component, `nonOrientable` the number of such components. Every point id is
+ * valid. With Consistency or AutoOrientNormals, `adjacency` is built and follows the reordering.
  */
 vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* input,
   Adjacency& adjacency, std::vector<vtkIdType>& clashes, vtkIdType& nonOrientable)
@@ -656,7 +657,7 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
   vtkCellArray* polys = input->GetPolys();
   const vtkIdType numPolys = polys->GetNumberOfCells();
   phongvtk::Orientation orientation;
-  if (self->GetConsistency())
+  if (self->GetConsistency() || self->GetAutoOrientNormals())
   {
     adjacency.Build(input);
     polys->Visit(RawCells{},
@@ -668,6 +669,32 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
   else
   {
     orientation.Reverse.assign(static_cast<std::size_t>(numPolys), 0);
+  }
+  if (self->GetAutoOrientNormals())
+  {
+    vtkSmartPointer<vtkDataArray> data = phongvtk::KernelCoordinates(input->GetPoints());
+    polys->Visit(RawCells{},
+      [&](const auto* offsets, const auto* conn)
+      {
+        auto orient = [&](const auto* points)
+        {
+          const phongvtk::AutoOrientReport report = phongvtk::AutoOrient(
+            points, numPolys, offsets, conn, adjacency.Neighbours, orientation);
+          vtkDebugWithObjectMacro(
+            self, << "AutoOrientNormals: " << report.Components << " component(s) oriented ("
+                  << report.Closed << " closed, " << report.Cavities << " cavities, " << report.Ties
+                  << " with zero flux kept, " << report.ExactSums << " decided exactly), "
+                  << report.Skipped << " left as they were.");
+        };
+        if (data->GetDataType() == VTK_FLOAT)
+        {
+          orient(static_cast<const float*>(data->GetVoidPointer(0)));
+        }
+        else
+        {
+          orient(static_cast<const double*>(data->GetVoidPointer(0)));
+        }
+      });
   }
   if (self->GetFlipNormals())
   {
@@ -830,7 +857,8 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
   std::vector<vtkIdType> clashes;
   vtkIdType nonOrientable = 0;
   Adjacency adjacency; // built once for Consistency and Splitting
-  if ((this->Consistency || this->FlipNormals) && input->GetNumberOfPolys() > 0)
+  if ((this->Consistency || this->AutoOrientNormals || this->FlipNormals) &&
+    input->GetNumberOfPolys() > 0)
   {
     firstBadCell = FirstInvalidCell(input);
     ok = firstBadCell < 0;
@@ -946,6 +974,7 @@ void vtkPolygonNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ComputeNormalStatus: " << (this->ComputeNormalStatus ? "On" : "Off") << "\n";
   os << indent << "PieceInvariant: " << (this->PieceInvariant ? "On" : "Off") << "\n";
   os << indent << "Consistency: " << (this->Consistency ? "On" : "Off") << "\n";
+  os << indent << "AutoOrientNormals: " << (this->AutoOrientNormals ? "On" : "Off") << "\n";
   os << indent << "FlipNormals: " << (this->FlipNormals ? "On" : "Off") << "\n";
   os << indent << "Splitting: " << (this->Splitting ? "On" : "Off") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";

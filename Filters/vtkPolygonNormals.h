@@ -182,8 +182,27 @@ public:
 
   ///@{
   /**
-   * Reverse every polygon ((p0, p(n-1), ..., p1)), after Consistency: the cells' order and every
-   * normal computed from them turn together. Default is off.
+   * Turn every connected component outward, after making its polygons agree (implies
+   * Consistency). A closed component faces outward when its enclosed volume is positive; that
+   * sign is exact (a certified double-precision sum, exact integer arithmetic when it cannot
+   * decide), so meshes far from the origin or nearly flat are oriented right. A closed component
+   * inside an odd number of other closed components (the cavity of a hollow solid) is turned
+   * inward, so that it too faces out of the material. An open component (with a boundary or a
+   * non-manifold edge) is turned so that the flux of the position field through it, taken from
+   * the centre of its bounding box, is positive: its faces on the whole turn away from its middle
+   * (a hemisphere or a surface with holes faces outward); a flux exactly zero (a planar
+   * component) keeps the order of its first polygon. Non-orientable components are left as
+   * Consistency leaves them. Decided per piece when the mesh comes in pieces. Default is off.
+   */
+  vtkSetMacro(AutoOrientNormals, bool);
+  vtkGetMacro(AutoOrientNormals, bool);
+  vtkBooleanMacro(AutoOrientNormals, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Reverse every polygon ((p0, p(n-1), ..., p1)), after Consistency and AutoOrientNormals: the
+   * cells' order and every normal computed from them turn together. Default is off.
    */
   vtkSetMacro(FlipNormals, bool);
   vtkGetMacro(FlipNormals, bool);
@@ -258,6 +277,7 @@ protected:
   bool ComputeNormalStatus = false;
   bool PieceInvariant = true;
   bool Consistency = false;
+  bool AutoOrientNormals = false;
   bool FlipNormals = false;
   bool Splitting = false;
   double FeatureAngle = 30.0;
