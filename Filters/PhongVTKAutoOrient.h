@@ -4,15 +4,16 @@
  * polygons agree (PhongVTKOrientation.h), is turned to face outward, decided by an exact sign.
  *
  * The rule, one for closed and open components: a component faces outward when the flux of the
- * position field through it, taken from the centre r of its bounding box,
+ * position field through it, taken from a point r,
  *
  *     F = sum over polygons f of (p0_f - r) . w_f     (w_f the summed cross products of f)
  *       = sum over fan triangles (p0, pi, pi+1) of det(p0 - r, pi - r, pi+1 - r),
  *
  * is positive. On a closed component F is six times the enclosed volume whatever r is (the area
- * vectors of a closed surface sum to exactly zero), so a closed component is oriented by the sign
- * of its volume; on an open one (a hemisphere, a surface with holes) F says whether the faces on
- * the whole turn away from the middle of the component. The sign is exact: a double-precision
+ * vectors of a closed surface sum to exactly zero; r is its first point), so a closed component
+ * is oriented by the sign of its volume; on an open one (a hemisphere, a surface with holes) r is
+ * the centre of its bounding box and F says whether the faces on the whole turn away from the
+ * middle of the component. The sign is exact: a double-precision
  * sum with a certified error bound (Shewchuk's orient3d bound per triangle, the summation's
  * bound on top), and exact integer arithmetic (GMP, PhongVTKExactAreaVector.cxx) when the bound
  * cannot decide. F exactly zero (a planar component, a surface as much inside out as not) keeps
@@ -36,6 +37,9 @@
 #define PhongVTKAutoOrient_h
 
 #include "PhongVTKOrientation.h"
+#include "PhongVTKParallel.h"
+
+#include "vtkSMPThreadLocal.h"
 
 #include "vtkMath.h"
 #include "vtkType.h"
@@ -166,15 +170,52 @@ inline double SolidAngle(const double* a, const double* b, const double* c, cons
 }
 } // namespace detail
 
+namespace detail
+{
+/// What one pass gathers of one component: its bounding box, whether its coordinates are
+/// finite, and its flux.
+struct PartSum
+{
+  double Lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double Hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  bool Finite = true;
+  FluxSum Flux;
+
+  void Merge(const PartSum& other)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Lo[k] = std::min(this->Lo[k], other.Lo[k]);
+      this->Hi[k] = std::max(this->Hi[k], other.Hi[k]);
+    }
+    this->Finite = this->Finite && other.Finite;
+    this->Flux.Sum += other.Flux.Sum;
+    this->Flux.Permanent += other.Flux.Permanent;
+    this->Flux.Magnitude += other.Flux.Magnitude;
+    this->Flux.SmallestDifference =
+      std::min(this->Flux.SmallestDifference, other.Flux.SmallestDifference);
+    this->Flux.Terms += other.Flux.Terms;
+  }
+};
+
+/// Components up to which the passes run on several threads, each with its own sums of all.
+constexpr std::size_t ThreadedComponents = 1024;
+} // namespace detail
+
 /**
  * Turns every orientable component of the `numPolys` polygons (cell array `offsets`, `conn`;
- * coordinates `points`, every id valid; `neighbours` from EdgeNeighbours) outward, as the file
- * comment says: `orientation` (from ConsistentOrientation, which made each component agree) gets
- * its Reverse flags of the components to turn inverted.
+ * coordinates `points`, every id valid) outward, as the file comment says: `orientation` (from
+ * ConsistentOrientation, which made each component agree) gets the Reverse flags of the
+ * components to turn inverted.
+ *
+ * One pass over the polygons gathers every component's box and, for a closed component, its
+ * flux from its first point (any point gives the volume); a second pass, only over open
+ * components, their flux from their box's centre. Both run on several threads when there are
+ * few components; the sums' order then varies, their certified or exact sign does not.
  */
 template <class T, class Offsets, class Connectivity>
 AutoOrientReport AutoOrient(const T* points, vtkIdType numPolys, const Offsets* offsets,
-  const Connectivity* conn, const std::vector<vtkIdType>& neighbours, Orientation& orientation)
+  const Connectivity* conn, Orientation& orientation)
 {
   AutoOrientReport report;
   const std::vector<vtkIdType>& component = orientation.Component;
@@ -186,105 +227,167 @@ AutoOrientReport AutoOrient(const T* points, vtkIdType numPolys, const Offsets* 
       x[k] = static_cast<double>(points[3 * static_cast<std::int64_t>(id) + k]);
     }
   };
-  // The polygons of every component, in polygon order (a counting sort).
-  std::vector<vtkIdType> first(numComponents + 1, 0);
-  std::vector<vtkIdType> members(static_cast<std::size_t>(numPolys));
-  for (vtkIdType f = 0; f < numPolys; ++f)
+  struct Part
   {
-    ++first[static_cast<std::size_t>(component[static_cast<std::size_t>(f)]) + 1];
+    detail::PartSum Sum;
+    double Reference[3] = { 0.0, 0.0, 0.0 }; // the flux is taken from here
+    bool Closed = true;
+    int Sign = 0; // of the flux in the consistent ordering: +1 outward, -1 inward, 0 a tie
+  };
+  std::vector<Part> parts(numComponents);
+  // Closed: no slot without a neighbour but edges from a point to itself.
+  for (const auto& slot : orientation.OpenSlots)
+  {
+    const vtkIdType f = slot.first;
+    const auto k = slot.second;
+    const auto next = k + 1 == static_cast<vtkIdType>(offsets[f + 1]) ? offsets[f] : k + 1;
+    if (conn[k] != conn[next])
+    {
+      parts[static_cast<std::size_t>(component[static_cast<std::size_t>(f)])].Closed = false;
+    }
   }
   for (std::size_t c = 0; c < numComponents; ++c)
   {
-    first[c + 1] += first[c];
+    if (parts[c].Closed)
+    {
+      const vtkIdType f = orientation.ComponentFirst[c];
+      point(static_cast<vtkIdType>(conn[offsets[f]]), parts[c].Reference);
+    }
   }
+  // A pass over the polygons of the components `wanted(c)`: box and finiteness always, the
+  // flux from the reference when `flux(c)`.
+  auto pass = [&](auto&& wanted, auto&& flux)
   {
+    auto run = [&](vtkIdType begin, vtkIdType end, std::vector<detail::PartSum>& sums)
+    {
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        const auto c = static_cast<std::size_t>(component[static_cast<std::size_t>(f)]);
+        if (!wanted(c))
+        {
+          continue;
+        }
+        detail::PartSum& sum = sums[c];
+        const auto m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
+        double x[3];
+        for (vtkIdType k = 0; k < m; ++k)
+        {
+          point(static_cast<vtkIdType>(conn[offsets[f] + k]), x);
+          for (int j = 0; j < 3; ++j)
+          {
+            sum.Finite = sum.Finite && std::isfinite(x[j]);
+            sum.Lo[j] = std::min(sum.Lo[j], x[j]);
+            sum.Hi[j] = std::max(sum.Hi[j], x[j]);
+          }
+        }
+        if (m < 3 || !flux(c))
+        {
+          continue;
+        }
+        const double sign = orientation.Reverse[static_cast<std::size_t>(f)] ? -1.0 : 1.0;
+        double p0[3], a[3], b[3];
+        point(static_cast<vtkIdType>(conn[offsets[f]]), p0);
+        point(static_cast<vtkIdType>(conn[offsets[f] + 1]), a);
+        for (vtkIdType k = 2; k < m; ++k)
+        {
+          point(static_cast<vtkIdType>(conn[offsets[f] + k]), b);
+          sum.Flux.Add(p0, a, b, parts[c].Reference, sign);
+          std::copy(b, b + 3, a);
+        }
+      }
+    };
+    if (numComponents > detail::ThreadedComponents)
+    {
+      std::vector<detail::PartSum> sums(numComponents);
+      run(0, numPolys, sums);
+      for (std::size_t c = 0; c < numComponents; ++c)
+      {
+        parts[c].Sum.Merge(sums[c]);
+      }
+      return;
+    }
+    vtkSMPThreadLocal<std::vector<detail::PartSum>> local;
+    phongvtk::For(0, numPolys, numPolys,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        std::vector<detail::PartSum>& sums = local.Local();
+        sums.resize(numComponents);
+        run(begin, end, sums);
+      });
+    for (const std::vector<detail::PartSum>& sums : local)
+    {
+      for (std::size_t c = 0; c < sums.size(); ++c)
+      {
+        parts[c].Sum.Merge(sums[c]);
+      }
+    }
+  };
+  pass([](std::size_t) { return true; }, [&](std::size_t c) { return parts[c].Closed; });
+  bool anyOpen = false;
+  for (std::size_t c = 0; c < numComponents; ++c)
+  {
+    Part& part = parts[c];
+    if (!part.Closed && part.Sum.Finite && !orientation.ComponentClashes[c])
+    {
+      anyOpen = true;
+      for (int k = 0; k < 3; ++k)
+      {
+        part.Reference[k] = 0.5 * part.Sum.Lo[k] + 0.5 * part.Sum.Hi[k];
+      }
+    }
+  }
+  auto open = [&](std::size_t c)
+  {
+    return !parts[c].Closed && parts[c].Sum.Finite && !orientation.ComponentClashes[c];
+  };
+  if (anyOpen)
+  {
+    pass(open, open);
+  }
+  // The polygons of every component, in polygon order (a counting sort), made only when the
+  // exact sums or the nesting need them.
+  std::vector<vtkIdType> first, members;
+  auto listMembers = [&]()
+  {
+    if (!first.empty())
+    {
+      return;
+    }
+    first.assign(numComponents + 1, 0);
+    members.resize(static_cast<std::size_t>(numPolys));
+    for (vtkIdType f = 0; f < numPolys; ++f)
+    {
+      ++first[static_cast<std::size_t>(component[static_cast<std::size_t>(f)]) + 1];
+    }
+    for (std::size_t c = 0; c < numComponents; ++c)
+    {
+      first[c + 1] += first[c];
+    }
     std::vector<vtkIdType> next(first.begin(), first.end() - 1);
     for (vtkIdType f = 0; f < numPolys; ++f)
     {
       members[static_cast<std::size_t>(
         next[static_cast<std::size_t>(component[static_cast<std::size_t>(f)])]++)] = f;
     }
-  }
-  // Bounding boxes, finiteness and closedness.
-  struct Part
-  {
-    double Lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
-    double Hi[3] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-    bool Finite = true;
-    bool Closed = true;
-    int Sign = 0; // of the flux in the consistent ordering: +1 outward, -1 inward, 0 a tie
   };
-  std::vector<Part> parts(numComponents);
-  for (std::size_t c = 0; c < numComponents; ++c)
-  {
-    Part& part = parts[c];
-    for (vtkIdType i = first[c]; i < first[c + 1]; ++i)
-    {
-      const vtkIdType f = members[static_cast<std::size_t>(i)];
-      const auto m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
-      for (vtkIdType k = 0; k < m; ++k)
-      {
-        double x[3];
-        point(static_cast<vtkIdType>(conn[offsets[f] + k]), x);
-        for (int j = 0; j < 3; ++j)
-        {
-          part.Finite = part.Finite && std::isfinite(x[j]);
-          part.Lo[j] = std::min(part.Lo[j], x[j]);
-          part.Hi[j] = std::max(part.Hi[j], x[j]);
-        }
-        // A boundary or non-manifold edge opens the component; an edge from a point to itself
-        // bounds nothing.
-        const auto next = conn[offsets[f] + (k + 1 == m ? 0 : k + 1)];
-        part.Closed = part.Closed &&
-          (neighbours[static_cast<std::size_t>(offsets[f] + k)] >= 0 ||
-            conn[offsets[f] + k] == next);
-      }
-    }
-  }
   // The sign of every orientable, finite component's flux.
-  auto center = [](const Part& part, double* r)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      r[k] = 0.5 * part.Lo[k] + 0.5 * part.Hi[k];
-    }
-  };
   std::vector<unsigned char> oriented(numComponents, 0);
   for (std::size_t c = 0; c < numComponents; ++c)
   {
     Part& part = parts[c];
-    if (orientation.ComponentClashes[c] || !part.Finite)
+    if (orientation.ComponentClashes[c] || !part.Sum.Finite)
     {
       ++report.Skipped;
       continue;
     }
     oriented[c] = 1;
     ++report.Components;
-    double r[3];
-    center(part, r);
-    detail::FluxSum sum;
-    for (vtkIdType i = first[c]; i < first[c + 1]; ++i)
-    {
-      const vtkIdType f = members[static_cast<std::size_t>(i)];
-      const double sign = orientation.Reverse[static_cast<std::size_t>(f)] ? -1.0 : 1.0;
-      const auto m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
-      double p0[3], a[3], b[3];
-      point(static_cast<vtkIdType>(conn[offsets[f]]), p0);
-      if (m >= 3)
-      {
-        point(static_cast<vtkIdType>(conn[offsets[f] + 1]), a);
-      }
-      for (vtkIdType k = 2; k < m; ++k)
-      {
-        point(static_cast<vtkIdType>(conn[offsets[f] + k]), b);
-        sum.Add(p0, a, b, r, sign);
-        std::copy(b, b + 3, a);
-      }
-    }
-    part.Sign = sum.CertifiedSign();
+    report.Closed += part.Closed;
+    part.Sign = part.Sum.Flux.CertifiedSign();
     if (part.Sign == 2)
     {
       ++report.ExactSums;
+      listMembers();
       std::vector<double> xyz;
       std::vector<std::int64_t> sizes;
       std::vector<signed char> signs;
@@ -301,14 +404,12 @@ AutoOrientReport AutoOrient(const T* points, vtkIdType numPolys, const Offsets* 
         sizes.push_back(m);
         signs.push_back(orientation.Reverse[static_cast<std::size_t>(f)] ? -1 : 1);
       }
-      part.Sign = detail::ExactOrientedFluxSign(
-        xyz.data(), sizes.data(), signs.data(), static_cast<std::int64_t>(sizes.size()), r);
+      part.Sign = detail::ExactOrientedFluxSign(xyz.data(), sizes.data(), signs.data(),
+        static_cast<std::int64_t>(sizes.size()), part.Reference);
     }
     report.Ties += part.Sign == 0;
-    report.Closed += part.Closed;
   }
-  // Nesting of the closed components with a volume: how many others hold each. A sweep in x
-  // keeps the candidate pairs to those whose boxes overlap in x.
+  // Nesting of the closed components with a volume: how many others hold each.
   std::vector<std::size_t> closed;
   for (std::size_t c = 0; c < numComponents; ++c)
   {
@@ -317,100 +418,108 @@ AutoOrientReport AutoOrient(const T* points, vtkIdType numPolys, const Offsets* 
       closed.push_back(c);
     }
   }
-  std::sort(closed.begin(), closed.end(),
-    [&](std::size_t a, std::size_t b)
-    { return parts[a].Lo[0] < parts[b].Lo[0] || (parts[a].Lo[0] == parts[b].Lo[0] && a < b); });
-  auto inBox = [](const Part& inner, const Part& outer)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      if (inner.Lo[k] < outer.Lo[k] || inner.Hi[k] > outer.Hi[k])
-      {
-        return false;
-      }
-    }
-    return true;
-  };
-  // B's winding number at q, B turned outward; NaN when q is one of B's points.
-  auto winding = [&](std::size_t b, const double* q)
-  {
-    double total = 0.0;
-    for (vtkIdType i = first[b]; i < first[b + 1]; ++i)
-    {
-      const vtkIdType f = members[static_cast<std::size_t>(i)];
-      const double sign = (orientation.Reverse[static_cast<std::size_t>(f)] ? -1.0 : 1.0) *
-        static_cast<double>(parts[b].Sign);
-      const auto m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
-      double p0[3], a[3], c[3];
-      point(static_cast<vtkIdType>(conn[offsets[f]]), p0);
-      point(static_cast<vtkIdType>(conn[offsets[f] + 1]), a);
-      if ((p0[0] == q[0] && p0[1] == q[1] && p0[2] == q[2]) ||
-        (a[0] == q[0] && a[1] == q[1] && a[2] == q[2]))
-      {
-        return std::numeric_limits<double>::quiet_NaN();
-      }
-      for (vtkIdType k = 2; k < m; ++k)
-      {
-        point(static_cast<vtkIdType>(conn[offsets[f] + k]), c);
-        if (c[0] == q[0] && c[1] == q[1] && c[2] == q[2])
-        {
-          return std::numeric_limits<double>::quiet_NaN();
-        }
-        total += sign * detail::SolidAngle(p0, a, c, q);
-        std::copy(c, c + 3, a);
-      }
-    }
-    return total / (4.0 * vtkMath::Pi());
-  };
-  auto inside = [&](std::size_t a, std::size_t b)
-  {
-    constexpr int tries = 8;
-    int tried = 0;
-    for (vtkIdType i = first[a]; i < first[a + 1] && tried < tries; ++i)
-    {
-      const vtkIdType f = members[static_cast<std::size_t>(i)];
-      for (auto k = offsets[f]; k < offsets[f + 1] && tried < tries; ++k, ++tried)
-      {
-        double q[3];
-        point(static_cast<vtkIdType>(conn[k]), q);
-        const double w = winding(b, q);
-        if (std::isfinite(w) && std::fabs(w - std::round(w)) < 0.1)
-        {
-          return std::round(w) != 0.0;
-        }
-      }
-    }
-    return false;
-  };
-  // Components sorted by the left side of their box join the active list; one whose box ends
-  // left of the current one's start can hold none of the rest and leaves it.
   std::vector<vtkIdType> depth(numComponents, 0);
-  std::vector<std::size_t> active;
-  for (std::size_t i = 0; i < closed.size();)
+  if (closed.size() > 1)
   {
-    const double lo = parts[closed[i]].Lo[0];
-    std::size_t end = i;
-    while (end < closed.size() && parts[closed[end]].Lo[0] == lo)
-    {
-      ++end;
-    }
-    active.erase(std::remove_if(active.begin(), active.end(),
-                   [&](std::size_t b) { return parts[b].Hi[0] < lo; }),
-      active.end());
-    active.insert(active.end(), closed.begin() + i, closed.begin() + end);
-    for (std::size_t k = i; k < end; ++k)
-    {
-      const std::size_t a = closed[k];
-      for (const std::size_t b : active)
+    listMembers();
+    std::sort(closed.begin(), closed.end(),
+      [&](std::size_t a, std::size_t b)
       {
-        if (b != a && inBox(parts[a], parts[b]) && inside(a, b))
+        return parts[a].Sum.Lo[0] < parts[b].Sum.Lo[0] ||
+          (parts[a].Sum.Lo[0] == parts[b].Sum.Lo[0] && a < b);
+      });
+    auto inBox = [](const detail::PartSum& inner, const detail::PartSum& outer)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        if (inner.Lo[k] < outer.Lo[k] || inner.Hi[k] > outer.Hi[k])
         {
-          ++depth[a];
+          return false;
         }
       }
+      return true;
+    };
+    // B's winding number at q, B turned outward; NaN when q is on B.
+    auto winding = [&](std::size_t b, const double* q)
+    {
+      double total = 0.0;
+      for (vtkIdType i = first[b]; i < first[b + 1]; ++i)
+      {
+        const vtkIdType f = members[static_cast<std::size_t>(i)];
+        const double sign = (orientation.Reverse[static_cast<std::size_t>(f)] ? -1.0 : 1.0) *
+          static_cast<double>(parts[b].Sign);
+        const auto m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
+        double p0[3], a[3], c[3];
+        point(static_cast<vtkIdType>(conn[offsets[f]]), p0);
+        point(static_cast<vtkIdType>(conn[offsets[f] + 1]), a);
+        for (vtkIdType k = 2; k < m; ++k)
+        {
+          point(static_cast<vtkIdType>(conn[offsets[f] + k]), c);
+          const bool corner =
+            std::equal(p0, p0 + 3, q) || std::equal(a, a + 3, q) || std::equal(c, c + 3, q);
+          const double angle =
+            corner ? std::numeric_limits<double>::quiet_NaN() : detail::SolidAngle(p0, a, c, q);
+          if (std::isnan(angle))
+          {
+            return angle;
+          }
+          total += sign * angle;
+          std::copy(c, c + 3, a);
+        }
+      }
+      return total / (4.0 * vtkMath::Pi());
+    };
+    auto inside = [&](std::size_t a, std::size_t b)
+    {
+      constexpr int tries = 8;
+      int tried = 0;
+      for (vtkIdType i = first[a]; i < first[a + 1] && tried < tries; ++i)
+      {
+        const vtkIdType f = members[static_cast<std::size_t>(i)];
+        for (auto k = offsets[f]; k < offsets[f + 1] && tried < tries; ++k, ++tried)
+        {
+          double q[3];
+          point(static_cast<vtkIdType>(conn[k]), q);
+          const double w = winding(b, q);
+          if (std::isfinite(w) && std::fabs(w - std::round(w)) < 0.1)
+          {
+            return std::round(w) != 0.0;
+          }
+        }
+      }
+      return false;
+    };
+    // Components sorted by the left side of their box join the active list; one whose box ends
+    // left of the current one's start can hold none of the rest and leaves it.
+    std::vector<std::size_t> active;
+    for (std::size_t i = 0; i < closed.size();)
+    {
+      const double lo = parts[closed[i]].Sum.Lo[0];
+      std::size_t end = i;
+      while (end < closed.size() && parts[closed[end]].Sum.Lo[0] == lo)
+      {
+        ++end;
+      }
+      active.erase(std::remove_if(active.begin(), active.end(),
+                     [&](std::size_t b) { return parts[b].Sum.Hi[0] < lo; }),
+        active.end());
+      active.insert(active.end(), closed.begin() + i, closed.begin() + end);
+      for (std::size_t k = i; k < end; ++k)
+      {
+        const std::size_t a = closed[k];
+        for (const std::size_t b : active)
+        {
+          if (b != a && inBox(parts[a].Sum, parts[b].Sum) && inside(a, b))
+          {
+            ++depth[a];
+          }
+        }
+      }
+      i = end;
     }
-    i = end;
   }
+  // Turn the components whose flux is negative, and the cavities.
+  std::vector<unsigned char> turn(numComponents, 0);
   for (std::size_t c = 0; c < numComponents; ++c)
   {
     if (!oriented[c])
@@ -423,12 +532,14 @@ AutoOrientReport AutoOrient(const T* points, vtkIdType numPolys, const Offsets* 
       sign = -sign;
       ++report.Cavities;
     }
-    if (sign < 0)
+    turn[c] = sign < 0;
+  }
+  if (std::find(turn.begin(), turn.end(), 1) != turn.end())
+  {
+    for (vtkIdType f = 0; f < numPolys; ++f)
     {
-      for (vtkIdType i = first[c]; i < first[c + 1]; ++i)
-      {
-        orientation.Reverse[static_cast<std::size_t>(members[static_cast<std::size_t>(i)])] ^= 1;
-      }
+      orientation.Reverse[static_cast<std::size_t>(f)] ^=
+        turn[static_cast<std::size_t>(component[static_cast<std::size_t>(f)])];
     }
   }
   return report;

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace phongvtk
@@ -41,6 +42,10 @@ struct Orientation
   // their smallest polygon: each polygon's component, and whether each is non-orientable.
   std::vector<vtkIdType> Component;
   std::vector<unsigned char> ComponentClashes;
+  std::vector<vtkIdType> ComponentFirst; // the smallest polygon of each
+  // Every edge slot without a neighbour (boundary, non-manifold or from a point to itself), as
+  // (polygon, slot) pairs in slot order.
+  std::vector<std::pair<vtkIdType, vtkIdType>> OpenSlots;
 };
 
 /**
@@ -95,9 +100,14 @@ Orientation ConsistentOrientation(
     {
       const vtkIdType n = neighbours[static_cast<std::size_t>(k)];
       const vtkIdType g = n >> 1;
-      if (n < 0 || g < f)
+      if (n < 0)
       {
-        continue; // no neighbour, or the edge was taken from g's side
+        result.OpenSlots.emplace_back(f, k);
+        continue;
+      }
+      if (g < f)
+      {
+        continue; // the edge was taken from g's side
       }
       // Same direction: exactly one of the two must be reversed.
       const auto same = static_cast<unsigned char>(n & 1);
@@ -133,6 +143,7 @@ Orientation ConsistentOrientation(
       result.Component[static_cast<std::size_t>(f)] =
         static_cast<vtkIdType>(result.ComponentClashes.size());
       result.ComponentClashes.push_back(clashing[static_cast<std::size_t>(f)]);
+      result.ComponentFirst.push_back(f);
       result.NonOrientable += clashing[static_cast<std::size_t>(f)];
     }
     else

@@ -678,8 +678,8 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
       {
         auto orient = [&](const auto* points)
         {
-          const phongvtk::AutoOrientReport report = phongvtk::AutoOrient(
-            points, numPolys, offsets, conn, adjacency.Neighbours, orientation);
+          const phongvtk::AutoOrientReport report =
+            phongvtk::AutoOrient(points, numPolys, offsets, conn, orientation);
           vtkDebugWithObjectMacro(
             self, << "AutoOrientNormals: " << report.Components << " component(s) oriented ("
                   << report.Closed << " closed, " << report.Cavities << " cavities, " << report.Ties
