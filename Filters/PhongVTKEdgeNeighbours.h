@@ -61,9 +61,29 @@ inline void ForCornersAt(
   }
 }
 
-/// The neighbour across every edge slot of `polys` (valid point ids, `links` theirs).
-inline std::vector<vtkIdType> EdgeNeighbours(
-  vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links)
+/**
+ * Two polygons around a non-manifold edge (three or more polygons, or one running along it
+ * twice): `First`, the smallest polygon around the edge, at its edge `Slot`, and `Other`, another
+ * polygon around it; `Same` when both run along the edge the same way.
+ */
+struct NonManifoldPair
+{
+  vtkIdType First, Slot, Other;
+  int Same;
+
+  bool operator<(const NonManifoldPair& b) const
+  {
+    return this->Slot < b.Slot || (this->Slot == b.Slot && this->Other < b.Other);
+  }
+};
+
+/**
+ * The neighbour across every edge slot of `polys` (valid point ids, `links` theirs); with
+ * `nonManifold`, also every polygon around each non-manifold edge paired with the smallest one
+ * around it, sorted by slot.
+ */
+inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* polys,
+  PolygonLinks& links, std::vector<NonManifoldPair>* nonManifold = nullptr)
 {
   std::vector<vtkIdType> neighbours(
     static_cast<std::size_t>(polys->GetConnectivityArray()->GetNumberOfValues()), -1);
@@ -77,6 +97,7 @@ inline std::vector<vtkIdType> EdgeNeighbours(
   {
     std::vector<Edge> Edges;
     std::vector<vtkIdType> Faces;
+    std::vector<NonManifoldPair> Pairs;
   };
   vtkSMPThreadLocal<Scratch> scratch;
   polys->Visit(RawCells{},
@@ -131,11 +152,41 @@ inline std::vector<vtkIdType> EdgeNeighbours(
                 neighbours[static_cast<std::size_t>(offsets[b.Polygon] + b.Slot)] =
                   2 * a.Polygon + same;
               }
+              else if (nonManifold && last - e >= 2)
+              {
+                // Polygons then slots ascending: the smallest polygon's first edge comes first.
+                const Edge* first = &edges[e];
+                for (std::size_t i = e + 1; i < last; ++i)
+                {
+                  if (edges[i].Polygon < first->Polygon ||
+                    (edges[i].Polygon == first->Polygon && edges[i].Slot < first->Slot))
+                  {
+                    first = &edges[i];
+                  }
+                }
+                for (std::size_t i = e; i < last; ++i)
+                {
+                  if (edges[i].Polygon != first->Polygon)
+                  {
+                    local.Pairs.push_back({ first->Polygon, offsets[first->Polygon] + first->Slot,
+                      edges[i].Polygon, edges[i].Forward == first->Forward ? 1 : 0 });
+                  }
+                }
+              }
               e = last;
             }
           }
         });
     });
+  if (nonManifold)
+  {
+    nonManifold->clear();
+    for (Scratch& local : scratch)
+    {
+      nonManifold->insert(nonManifold->end(), local.Pairs.begin(), local.Pairs.end());
+    }
+    std::sort(nonManifold->begin(), nonManifold->end());
+  }
   return neighbours;
 }
 

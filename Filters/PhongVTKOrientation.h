@@ -59,11 +59,13 @@ struct Orientation
  * memory order: a breadth-first walk waited on the memory for most of its time): a set's root
  * is its smallest polygon, which keeps its order, and every polygon's parity to the root says
  * whether it is reversed. An edge between two polygons already in one set whose parities
- * disagree is where a non-orientable component cannot agree.
+ * disagree is where a non-orientable component cannot agree. With `nonManifold` (EdgeNeighbours'
+ * pairs), components are then joined across non-manifold edges, in slot order.
  */
 template <class Offsets>
-Orientation ConsistentOrientation(
-  vtkIdType numPolys, const Offsets* offsets, const std::vector<vtkIdType>& neighbours)
+Orientation ConsistentOrientation(vtkIdType numPolys, const Offsets* offsets,
+  const std::vector<vtkIdType>& neighbours,
+  const std::vector<NonManifoldPair>* nonManifold = nullptr)
 {
   std::vector<vtkIdType> parent(static_cast<std::size_t>(numPolys));
   std::iota(parent.begin(), parent.end(), vtkIdType(0));
@@ -128,6 +130,26 @@ Orientation ConsistentOrientation(
       parent[static_cast<std::size_t>(high)] = low;
       parity[static_cast<std::size_t>(high)] = pf ^ pg ^ same;
       clashing[static_cast<std::size_t>(low)] |= clashing[static_cast<std::size_t>(high)];
+    }
+  }
+  // Non-manifold traversal: components that meet only at non-manifold edges join, each pair
+  // made to run along the edge in opposite directions where it joins two components; a pair
+  // within one component is passed over (there is no right pairing around such an edge).
+  if (nonManifold)
+  {
+    for (const NonManifoldPair& pair : *nonManifold)
+    {
+      unsigned char pf, pg;
+      const vtkIdType rf = find(pair.First, pf);
+      const vtkIdType rg = find(pair.Other, pg);
+      if (rf != rg)
+      {
+        const vtkIdType low = std::min(rf, rg), high = std::max(rf, rg);
+        parent[static_cast<std::size_t>(high)] = low;
+        parity[static_cast<std::size_t>(high)] =
+          static_cast<unsigned char>(pf ^ pg ^ static_cast<unsigned char>(pair.Same));
+        clashing[static_cast<std::size_t>(low)] |= clashing[static_cast<std::size_t>(high)];
+      }
     }
   }
   result.Reverse.resize(static_cast<std::size_t>(numPolys));

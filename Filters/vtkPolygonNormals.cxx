@@ -510,6 +510,8 @@ struct Adjacency
 {
   phongvtk::PolygonLinks Links;
   std::vector<vtkIdType> Neighbours;
+  bool WantNonManifold = false; // NonManifoldTraversal: the pairs across non-manifold edges
+  std::vector<phongvtk::NonManifoldPair> NonManifold;
   bool Built = false;
 
   void Build(vtkPolyData* mesh)
@@ -517,8 +519,8 @@ struct Adjacency
     if (!this->Built)
     {
       phongvtk::BuildPolygonLinks(mesh->GetPoints(), mesh->GetPolys(), this->Links);
-      this->Neighbours =
-        phongvtk::EdgeNeighbours(mesh->GetNumberOfPoints(), mesh->GetPolys(), this->Links);
+      this->Neighbours = phongvtk::EdgeNeighbours(mesh->GetNumberOfPoints(), mesh->GetPolys(),
+        this->Links, this->WantNonManifold ? &this->NonManifold : nullptr);
       this->Built = true;
     }
   }
@@ -662,7 +664,10 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
     adjacency.Build(input);
     polys->Visit(RawCells{},
       [&](const auto* offsets, const auto*)
-      { orientation = phongvtk::ConsistentOrientation(numPolys, offsets, adjacency.Neighbours); });
+      {
+        orientation = phongvtk::ConsistentOrientation(numPolys, offsets, adjacency.Neighbours,
+          adjacency.WantNonManifold ? &adjacency.NonManifold : nullptr);
+      });
     clashes = orientation.Clashes;
     nonOrientable = orientation.NonOrientable;
   }
@@ -857,6 +862,8 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
   std::vector<vtkIdType> clashes;
   vtkIdType nonOrientable = 0;
   Adjacency adjacency; // built once for Consistency and Splitting
+  adjacency.WantNonManifold =
+    this->NonManifoldTraversal && (this->Consistency || this->AutoOrientNormals);
   if ((this->Consistency || this->AutoOrientNormals || this->FlipNormals) &&
     input->GetNumberOfPolys() > 0)
   {
@@ -975,6 +982,7 @@ void vtkPolygonNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PieceInvariant: " << (this->PieceInvariant ? "On" : "Off") << "\n";
   os << indent << "Consistency: " << (this->Consistency ? "On" : "Off") << "\n";
   os << indent << "AutoOrientNormals: " << (this->AutoOrientNormals ? "On" : "Off") << "\n";
+  os << indent << "NonManifoldTraversal: " << (this->NonManifoldTraversal ? "On" : "Off") << "\n";
   os << indent << "FlipNormals: " << (this->FlipNormals ? "On" : "Off") << "\n";
   os << indent << "Splitting: " << (this->Splitting ? "On" : "Off") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";

@@ -201,6 +201,24 @@ public:
 
   ///@{
   /**
+   * With Consistency or AutoOrientNormals, also make polygons agree across non-manifold edges
+   * (three or more polygons), as vtkPolyDataNormals' NonManifoldTraversal. Manifold edges decide
+   * first; then the components they form are joined across non-manifold edges, in cell order:
+   * every polygon around such an edge is paired with the smallest-numbered one around it, and a
+   * pair that joins two components makes them run along the edge in opposite directions (a pair
+   * within one component is passed over: around an edge of three or more polygons there is no
+   * right pairing without the geometry). Joined components count as one, with a non-manifold
+   * edge, for AutoOrientNormals (an open component). Default is off (vtkPolyDataNormals: on), so
+   * that components touching at a non-manifold edge (two cubes sharing an edge) are oriented
+   * each on its own.
+   */
+  vtkSetMacro(NonManifoldTraversal, bool);
+  vtkGetMacro(NonManifoldTraversal, bool);
+  vtkBooleanMacro(NonManifoldTraversal, bool);
+  ///@}
+
+  ///@{
+  /**
    * Reverse every polygon ((p0, p(n-1), ..., p1)), after Consistency and AutoOrientNormals: the
    * cells' order and every normal computed from them turn together. Default is off.
    */
@@ -278,6 +296,7 @@ protected:
   bool PieceInvariant = true;
   bool Consistency = false;
   bool AutoOrientNormals = false;
+  bool NonManifoldTraversal = false;
   bool FlipNormals = false;
   bool Splitting = false;
   double FeatureAngle = 30.0;

@@ -446,6 +446,38 @@ TEST(AutoOrient, TouchingComponents)
   auto out = AutoOriented(MakePolyData(points, cells));
   EXPECT_EQ(FacingBack(out, 0, 6, From({ 0.5, 0.5, 0.5 })), 0);
   EXPECT_EQ(FacingBack(out, 6, 12, From({ 1.5, 2.0, 1.5 })), 0);
+  // Two cubes sharing an edge (four polygons on it: non-manifold, so each cube counts as open,
+  // and their flux is still their volume): both outward (NonManifoldTraversal off).
+  {
+    auto c = Cube({ 1, 0, 1 }, { 2, 1, 2 });
+    std::vector<Point> shared = PointsOf(a);
+    Cells two;
+    two.Polys = PolygonsOf(a);
+    const std::vector<Point> pc = PointsOf(c);
+    std::vector<vtkIdType> map(8);
+    for (std::size_t k = 0; k < 8; ++k)
+    {
+      if (k == 0 || k == 2)
+      {
+        map[k] = k == 0 ? 5 : 7; // (1, 0, 1) and (1, 1, 1) are a's points 5 and 7
+        continue;
+      }
+      map[k] = static_cast<vtkIdType>(shared.size());
+      shared.push_back(pc[k]);
+    }
+    for (Cell cell : PolygonsOf(c))
+    {
+      for (vtkIdType& id : cell)
+      {
+        id = map[static_cast<std::size_t>(id)];
+      }
+      std::reverse(cell.begin(), cell.end());
+      two.Polys.push_back(cell);
+    }
+    auto edgeShared = AutoOriented(MakePolyData(shared, two));
+    EXPECT_EQ(FacingBack(edgeShared, 0, 6, From({ 0.5, 0.5, 0.5 })), 0);
+    EXPECT_EQ(FacingBack(edgeShared, 6, 12, From({ 1.5, 0.5, 1.5 })), 0);
+  }
   // A cube sitting in the corner of a bigger one (sharing that corner point and lying against
   // three of its walls from inside): a cavity, so inward. Its bottom face's points all lie on the
   // big cube and are passed over for the winding number; its top face's (1, 1, 1) decides.

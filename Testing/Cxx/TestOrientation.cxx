@@ -290,6 +290,73 @@ TEST(Orientation, NonManifoldEdgesImposeNothing)
   EXPECT_EQ(PolygonsOf(out), cells.Polys);
 }
 
+TEST(Orientation, NonManifoldTraversalJoinsThePagesOfABook)
+{
+  // Three pages on the spine 0-1, each two quads (a component of its own without the
+  // traversal), pages 1 and 2 given in the reverse order. With NonManifoldTraversal every page
+  // runs along the spine against page 0 (the smallest polygon around it), as in VTK's traversal
+  // from cell 0.
+  std::vector<Point> p = { { 0, 0, 0 }, { 0, 0, 1 } };
+  Cells cells;
+  for (int page = 0; page < 3; ++page)
+  {
+    const double t = 2.0 * M_PI * page / 3.0;
+    const double c = std::cos(t), s = std::sin(t);
+    const auto base = static_cast<vtkIdType>(p.size());
+    p.insert(p.end(), { { c, s, 0 }, { c, s, 1 }, { 2 * c, 2 * s, 0 }, { 2 * c, 2 * s, 1 } });
+    Cell inner = { 0, base, base + 1, 1 };
+    Cell outer = { base, base + 2, base + 3, base + 1 };
+    if (page > 0)
+    {
+      std::reverse(inner.begin(), inner.end());
+      std::reverse(outer.begin(), outer.end());
+    }
+    cells.Polys.push_back(inner);
+    cells.Polys.push_back(outer);
+  }
+  auto book = MakePolyData(p, cells);
+  // +1 when the polygon runs 0 -> 1 along the spine, -1 for 1 -> 0.
+  auto spine = [](const Cell& cell)
+  {
+    for (std::size_t k = 0; k < cell.size(); ++k)
+    {
+      const vtkIdType a = cell[k], b = cell[(k + 1) % cell.size()];
+      if (a == 0 && b == 1)
+      {
+        return 1;
+      }
+      if (a == 1 && b == 0)
+      {
+        return -1;
+      }
+    }
+    return 0;
+  };
+  auto alone = PolygonsOf(RunFilter(book, [](vtkPolygonNormals* f) { f->ConsistencyOn(); }));
+  EXPECT_EQ(alone, PolygonsOf(book)) << "each page keeps its first polygon's order";
+  auto joined = PolygonsOf(RunFilter(book,
+    [](vtkPolygonNormals* f)
+    {
+      f->ConsistencyOn();
+      f->NonManifoldTraversalOn();
+    }));
+  EXPECT_EQ(spine(joined[0]), -1);
+  EXPECT_EQ(spine(joined[2]), 1);
+  EXPECT_EQ(spine(joined[4]), 1);
+  EXPECT_EQ(DisagreeingEdges(MakePolyData(p, Cells{ {}, {}, joined, {} })), 0);
+  vtkNew<vtkPolyDataNormals> vtk;
+  vtk->SetInputData(book);
+  vtk->SplittingOff();
+  vtk->ConsistencyOn();
+  vtk->NonManifoldTraversalOn();
+  vtk->Update();
+  const std::vector<Cell> theirs = PolygonsOf(vtk->GetOutput());
+  for (std::size_t f = 0; f < theirs.size(); f += 2)
+  {
+    EXPECT_EQ(spine(theirs[f]), spine(joined[f])) << "page " << f / 2;
+  }
+}
+
 TEST(Orientation, FlipNormalsTurnsTheCellsAndEveryNormalTogether)
 {
   auto sphere = SphereMesh(30);
@@ -411,4 +478,15 @@ TEST(OrientationKernel, EdgeNeighboursOfAFanWithAFinAndABoundary)
     -1, -1, -1, -1, -1, -1, -1, -1, -1 // the fin: nothing manifold
   };
   EXPECT_EQ(n, expected);
+  // The fin's pairs: polygon 3's edge 4-5 (slot 9) with 4 (running the other way) and 5 (the
+  // same way).
+  std::vector<phongvtk::NonManifoldPair> pairs;
+  EXPECT_EQ(phongvtk::EdgeNeighbours(9, mesh->GetPolys(), links, &pairs), expected);
+  ASSERT_EQ(pairs.size(), 2u);
+  EXPECT_EQ(pairs[0].First, 3);
+  EXPECT_EQ(pairs[0].Slot, 9);
+  EXPECT_EQ(pairs[0].Other, 4);
+  EXPECT_EQ(pairs[0].Same, 0);
+  EXPECT_EQ(pairs[1].Other, 5);
+  EXPECT_EQ(pairs[1].Same, 1);
 }
