@@ -201,18 +201,34 @@ def add_splitting(parser, split=True):
 
 
 def add_orientation(parser):
-    """--consistency and --flip (of the polygons, before the normals)."""
-    parser.add_argument("--consistency", action="store_true",
-                        help="reorder the polygons so that neighbours agree in orientation "
-                             "(a non-orientable surface is reported and its seam flagged)")
-    parser.add_argument("--flip", action="store_true",
-                        help="reverse every polygon, and so every normal")
+    """--consistency, --auto-orient, --non-manifold-traversal and --flip (of the polygons,
+    before the normals)."""
+    group = parser.add_argument_group("orientation", "How the polygons are ordered before the "
+                                                     "normals are computed (default: as given).")
+    group.add_argument("--consistency", action="store_true",
+                       help="reorder the polygons so that neighbours agree in orientation "
+                            "(a non-orientable surface is reported and its seam flagged)")
+    group.add_argument("--auto-orient", action="store_true",
+                       help="also turn every connected part outward: a closed part by the "
+                            "exact sign of its volume (a cavity inward, facing out of the "
+                            "material), an open part away from the centre of its box")
+    group.add_argument("--non-manifold-traversal", action="store_true",
+                       help="with --consistency or --auto-orient, also make parts that meet "
+                            "only at edges of three or more polygons agree across them")
+    group.add_argument("--flip", action="store_true",
+                       help="reverse every polygon, and so every normal")
+
+
+def orientation_of(args):
+    """The vtkPolygonNormals orientation options the command-line options ask for."""
+    return {"Consistency": args.consistency, "AutoOrientNormals": args.auto_orient,
+            "NonManifoldTraversal": args.non_manifold_traversal, "FlipNormals": args.flip}
 
 
 def orient(normals, args):
-    """Consistency and FlipNormals of the vtkPolygonNormals `normals` as the options say."""
-    normals.SetConsistency(args.consistency)
-    normals.SetFlipNormals(args.flip)
+    """The orientation options of the vtkPolygonNormals `normals` as the options say."""
+    for name, value in orientation_of(args).items():
+        getattr(normals, f"Set{name}")(value)
 
 
 def feature_angle_of(args):
@@ -225,6 +241,7 @@ def add_scene(parser, size, what="image", zoom=1.0, split=True):
     add_accuracy(parser, "the normals")
     add_weighting(parser)
     add_splitting(parser, split)
+    add_orientation(parser)
     parser.add_argument("--size", type=positive_int, nargs=2, default=size, metavar=("W", "H"),
                         help=f"{what} size in pixels (default {size[0]} {size[1]})")
     parser.add_argument("--backend", choices=BACKENDS, default="osmesa",
@@ -273,7 +290,7 @@ def scene_from(args):
         view=View(azimuth=args.azimuth, elevation=args.elevation, parallel=args.parallel,
                   zoom=args.zoom),
         background=tuple(args.background), accuracy=args.accuracy, weighting=args.weighting,
-        feature_angle=feature_angle_of(args))
+        feature_angle=feature_angle_of(args), orientation=orientation_of(args))
 
 
 def say(args, text):
@@ -644,7 +661,7 @@ def build_parser():
     normals.add_argument("--status", action="store_true",
                          help="the cell array NormalStatus (0 ok, 1 degenerate, 2 non-finite, "
                               "3 not a surface, 4 on the seam of a non-orientable surface "
-                              "with --consistency)")
+                              "with --consistency or --auto-orient)")
     normals.add_argument("--precision", choices=PRECISIONS, default="single",
                          help="precision of the output arrays: single (default), double, or "
                               "default (that of the points)")

@@ -8,7 +8,7 @@ records (:class:`Material`, :class:`Light`, :class:`View`, :class:`Scene`).
 
 import math
 from dataclasses import dataclass, field
-from typing import List, Optional, Tuple
+from typing import Dict, List, Optional, Tuple
 
 import numpy as np
 from vtkmodules.util import numpy_support
@@ -159,7 +159,8 @@ class Scene:
     """Everything but the mesh: material, lights (none: :data:`KEY_LIGHT`), the scene's ambient
     light Ia (or `derived_ambient`: vtkPhongPolyDataMapper's SceneAmbient), camera, background,
     and the accuracy, point weighting and feature angle of the normals (`feature_angle` None:
-    no splitting at sharp edges)."""
+    no splitting at sharp edges), and how the polygons are oriented first (`orientation`:
+    vtkPolygonNormals option name -> value, e.g. {"AutoOrientNormals": True})."""
 
     material: Material = field(default_factory=Material)
     lights: List[Light] = field(default_factory=list)
@@ -170,12 +171,15 @@ class Scene:
     accuracy: str = "double"
     weighting: str = "area"
     feature_angle: Optional[float] = None
+    orientation: Dict[str, bool] = field(default_factory=dict)
 
 
-def normals_filter(mesh, shading, accuracy="double", weighting="area", feature_angle=None):
+def normals_filter(mesh, shading, accuracy="double", weighting="area", feature_angle=None,
+                   orientation=None):
     """vtkPolygonNormals on `mesh` as `shading` needs them: cell normals for flat, point normals
     (faces weighted by `weighting`) for Gouraud and Phong, split at edges sharper than
-    `feature_angle` degrees unless it is None."""
+    `feature_angle` degrees unless it is None; `orientation` sets the orientation options
+    (Consistency, AutoOrientNormals, NonManifoldTraversal, FlipNormals) by name."""
     normals = phongvtk.vtkPolygonNormals()
     normals.SetInputData(mesh)
     normals.SetAccuracy(ACCURACIES[accuracy])
@@ -186,6 +190,8 @@ def normals_filter(mesh, shading, accuracy="double", weighting="area", feature_a
     if feature_angle is not None:
         normals.SplittingOn()
         normals.SetFeatureAngle(feature_angle)
+    for name, value in (orientation or {}).items():
+        getattr(normals, f"Set{name}")(value)
     return normals
 
 
@@ -291,7 +297,7 @@ def render_grid(rows, scene, size, backend="osmesa", labels=False, progress=None
         camera = None
         for index, panel in enumerate(row):
             normals = normals_filter(panel.mesh, panel.shading, scene.accuracy, scene.weighting,
-                                     scene.feature_angle)
+                                     scene.feature_angle, scene.orientation)
             progress.run(normals, f"normals ({panel.shading})", "cannot compute the normals")
             actor = shaded_actor(normals.GetOutput(), panel.shading, scene.material)
             actor.GetMapper().SetSceneAmbient(scene.derived_ambient)

@@ -4,10 +4,10 @@ level Polygon Normals asks for; RedistributeDataSet gives none), computes cell a
 normals with the plugin's Polygon Normals, gathers the result on rank 0 and saves, for every cell
 and point that a process owns (not a ghost), its original id and its normal.
 
-    pv_distributed_normals.py PLUGIN MESH.vtp OUTPUT.npz ACCURACY WEIGHTING SPLITTING
+    pv_distributed_normals.py PLUGIN MESH.vtp OUTPUT.npz ACCURACY WEIGHTING SPLITTING [AUTO]
 
 SPLITTING 1 splits the points at sharp edges (30 degrees): a split point's copies carry its
-original id too.
+original id too. AUTO 1 turns Auto Orient Normals on.
 """
 import sys
 
@@ -18,13 +18,14 @@ from paraview.simple import (ExtractSurface, GhostCellsGenerator, LoadPlugin,
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 plugin, mesh, output, accuracy, weighting, splitting = sys.argv[1:7]
+auto_orient = int(sys.argv[7]) if len(sys.argv) > 7 else 0
 LoadPlugin(plugin, remote=True, ns=globals())  # adds the plugin's proxies here
 source = XMLPolyDataReader(FileName=[mesh])
 pieces = ExtractSurface(Input=RedistributeDataSet(Input=source))
 ghosts = GhostCellsGenerator(Input=pieces)
 normals = PolygonNormals(Input=ghosts, ComputePointNormals=1, Accuracy=accuracy,
                          PointWeighting=weighting, OutputPrecision="Double",
-                         Splitting=int(splitting))
+                         Splitting=int(splitting), AutoOrientNormals=auto_orient)
 gathered = sm.Fetch(normals)
 
 

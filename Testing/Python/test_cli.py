@@ -363,6 +363,21 @@ def test_normals_consistency_and_flip(phongvtk_cli, tmp_path):
         assert (normals == expected).all(), options
 
 
+def test_normals_auto_orient_turns_an_inside_out_cube_outward(phongvtk_cli, tmp_path):
+    # Every face reversed: --consistency keeps them all inward (they agree), --auto-orient turns
+    # the cube outward by the sign of its volume, --flip on top turns it back.
+    faces = [[f[0]] + list(f[:0:-1]) for f in CUBE_FACES]
+    inside_out = write_ply(tmp_path / "inside_out.ply", CUBE_POINTS, faces)
+    outward = np.array(CUBE_NORMALS, dtype=float)
+    for options, expected in ((("--consistency",), -outward), (("--auto-orient",), outward),
+                              (("--auto-orient", "--flip"), -outward)):
+        assert phongvtk_cli("normals", inside_out, "-o", "out.vtp", "--precision", "double",
+                            *options).returncode == 0
+        mesh = read_vtp(tmp_path / "out.vtp")
+        normals = numpy_support.vtk_to_numpy(mesh.GetCellData().GetArray("Normals"))
+        assert (normals == expected).all(), options
+
+
 @pytest.mark.parametrize("angle", ["-1", "180.5", "nan"])
 def test_feature_angle_outside_0_to_180_is_a_usage_error(phongvtk_cli, cube_ply, angle):
     result = phongvtk_cli("normals", cube_ply, "-o", "x.vtp", "--feature-angle", angle)
@@ -506,7 +521,9 @@ def speed_result(vtk, pdn_cells, cells, exact, tmpn, points, in_cell_order):
           "points DOUBLE": points, "points DOUBLE in cell order": in_cell_order,
           "visible area DOUBLE": cells, "visible area EXACT": exact,
           "visible area DOUBLE + max": 3 * cells, "vtkPolyDataNormals defaults": 30 * points,
-          "split + consistency DOUBLE": 2 * points, "split + consistency EXACT": 4 * points}
+          "split + consistency DOUBLE": 2 * points, "split + consistency EXACT": 4 * points,
+          "vtkPolyDataNormals defaults + auto-orient": 40 * points,
+          "split + auto-orient DOUBLE": 2 * points, "split + auto-orient EXACT": 5 * points}
     mesh = {"name": "m", "cells": 8, "points": 6, "ms": ms, "floor cells ms": 1.0,
             "floor points ms": 1.0}
     return {"vtk": vtk, "backend": "Sequential", "threads": 1, "bandwidth": 1e10,
@@ -515,7 +532,7 @@ def speed_result(vtk, pdn_cells, cells, exact, tmpn, points, in_cell_order):
 
 def goal_lines(report):
     """The report's ratio lines that carry a goal, by ratio name."""
-    return {line[2:60].strip(): line for line in report.splitlines()
+    return {line[2:76].strip(): line for line in report.splitlines()
             if line.startswith("  ") and ">=" in line}
 
 
@@ -531,6 +548,11 @@ def test_speed_report_marks_each_goal_for_its_vtk_generation():
     # Splitting and consistency against vtkPolyDataNormals' defaults: 15x (10), 7.5x (5).
     assert lines["split + consistency DOUBLE / vtkPolyDataNormals defaults"].endswith(">= 10 met")
     assert lines["split + consistency EXACT / vtkPolyDataNormals defaults"].endswith(">= 5 met")
+    # With AutoOrientNormals on both sides: 20x (10), 8x (5).
+    assert lines["split + auto-orient DOUBLE / vtkPolyDataNormals defaults + auto-orient"
+                 ].endswith(">= 10 met")
+    assert lines["split + auto-orient EXACT / vtkPolyDataNormals defaults + auto-orient"
+                 ].endswith(">= 5 met")
     # VTK 9.6: cells 5x (4), EXACT 2.5x (2), points 1.5x TMPN (2), 15x PDN points (8).
     lines = goal_lines(speed.format_report(
         [speed_result("9.6.2", 50.0, 10.0, 20.0, 15.0, 10.0, 5.0)]))
