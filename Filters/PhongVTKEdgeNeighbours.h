@@ -114,7 +114,10 @@ inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* 
             const vtkIdType* cells = links.GetCells(p);
             // A polygon that uses p twice is listed twice: each once, in any order of the links.
             faces.assign(cells, cells + links.GetNumberOfCells(p));
-            std::sort(faces.begin(), faces.end());
+            if (!std::is_sorted(faces.begin(), faces.end()))
+            {
+              std::sort(faces.begin(), faces.end());
+            }
             faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
             edges.clear();
             for (const vtkIdType f : faces)

@@ -38,8 +38,9 @@ struct Orientation
   vtkIdType Reversed = 0;
   vtkIdType NonOrientable = 0;    // components whose polygons cannot all agree
   std::vector<vtkIdType> Clashes; // polygons along an edge where they still disagree, sorted
-  // The connected components (polygons joined by manifold edges), numbered in the order of
-  // their smallest polygon: each polygon's component, and whether each is non-orientable.
+  // With `components` (AutoOrient): the connected components (polygons joined by manifold
+  // edges), numbered in the order of their smallest polygon: each polygon's component, and
+  // whether each is non-orientable.
   std::vector<vtkIdType> Component;
   std::vector<unsigned char> ComponentClashes;
   std::vector<vtkIdType> ComponentFirst; // the smallest polygon of each
@@ -60,12 +61,13 @@ struct Orientation
  * is its smallest polygon, which keeps its order, and every polygon's parity to the root says
  * whether it is reversed. An edge between two polygons already in one set whose parities
  * disagree is where a non-orientable component cannot agree. With `nonManifold` (EdgeNeighbours'
- * pairs), components are then joined across non-manifold edges, in slot order.
+ * pairs), components are then joined across non-manifold edges, in slot order; with
+ * `components`, the components and open slots are listed as well.
  */
 template <class Offsets>
 Orientation ConsistentOrientation(vtkIdType numPolys, const Offsets* offsets,
   const std::vector<vtkIdType>& neighbours,
-  const std::vector<NonManifoldPair>* nonManifold = nullptr)
+  const std::vector<NonManifoldPair>* nonManifold = nullptr, bool components = false)
 {
   std::vector<vtkIdType> parent(static_cast<std::size_t>(numPolys));
   std::iota(parent.begin(), parent.end(), vtkIdType(0));
@@ -104,7 +106,10 @@ Orientation ConsistentOrientation(vtkIdType numPolys, const Offsets* offsets,
       const vtkIdType g = n >> 1;
       if (n < 0)
       {
-        result.OpenSlots.emplace_back(f, k);
+        if (components)
+        {
+          result.OpenSlots.emplace_back(f, k);
+        }
         continue;
       }
       if (g < f)
@@ -153,14 +158,21 @@ Orientation ConsistentOrientation(vtkIdType numPolys, const Offsets* offsets,
     }
   }
   result.Reverse.resize(static_cast<std::size_t>(numPolys));
-  result.Component.resize(static_cast<std::size_t>(numPolys));
+  if (components)
+  {
+    result.Component.resize(static_cast<std::size_t>(numPolys));
+  }
   for (vtkIdType f = 0; f < numPolys; ++f)
   {
     unsigned char toRoot;
     const vtkIdType root = find(f, toRoot);
     result.Reverse[static_cast<std::size_t>(f)] = toRoot;
     result.Reversed += toRoot;
-    if (root == f) // a root comes before every other polygon of its component
+    if (!components)
+    {
+      result.NonOrientable += root == f && clashing[static_cast<std::size_t>(f)];
+    }
+    else if (root == f) // a root comes before every other polygon of its component
     {
       result.Component[static_cast<std::size_t>(f)] =
         static_cast<vtkIdType>(result.ComponentClashes.size());

@@ -83,7 +83,11 @@ struct PointRegions
   {
     (void)p;
     this->Faces.assign(cells, cells + count);
-    std::sort(this->Faces.begin(), this->Faces.end());
+    // The links of a sequential build come sorted, each polygon once unless it uses p twice.
+    if (!std::is_sorted(this->Faces.begin(), this->Faces.end()))
+    {
+      std::sort(this->Faces.begin(), this->Faces.end());
+    }
     this->Faces.erase(std::unique(this->Faces.begin(), this->Faces.end()), this->Faces.end());
     const auto n = static_cast<std::int32_t>(this->Faces.size());
     this->Parent.resize(static_cast<std::size_t>(n));
@@ -103,8 +107,7 @@ struct PointRegions
           {
             return;
           }
-          const auto b = static_cast<std::int32_t>(
-            std::lower_bound(this->Faces.begin(), this->Faces.end(), fb) - this->Faces.begin());
+          const auto b = this->IndexOf(fb);
           const std::int32_t ra = this->Root(a);
           const std::int32_t rb = this->Root(b);
           this->Parent[std::max(ra, rb)] = std::min(ra, rb);
@@ -135,12 +138,25 @@ struct PointRegions
     }
   }
 
-  /// The label of polygon f (one of Faces).
-  std::int32_t LabelOf(vtkIdType f) const
+  /// The index of polygon f (one of Faces) in Faces: a linear search, as a point has few.
+  std::int32_t IndexOf(vtkIdType f) const
   {
-    const auto at = std::lower_bound(this->Faces.begin(), this->Faces.end(), f);
-    return this->Label[static_cast<std::size_t>(at - this->Faces.begin())];
+    const vtkIdType* faces = this->Faces.data();
+    const auto n = static_cast<std::int32_t>(this->Faces.size());
+    if (n > 16)
+    {
+      return static_cast<std::int32_t>(std::lower_bound(faces, faces + n, f) - faces);
+    }
+    std::int32_t i = 0;
+    while (faces[i] != f)
+    {
+      ++i;
+    }
+    return i;
   }
+
+  /// The label of polygon f (one of Faces).
+  std::int32_t LabelOf(vtkIdType f) const { return this->Label[this->IndexOf(f)]; }
 };
 
 /**

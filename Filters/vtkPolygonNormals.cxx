@@ -666,7 +666,8 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
       [&](const auto* offsets, const auto*)
       {
         orientation = phongvtk::ConsistentOrientation(numPolys, offsets, adjacency.Neighbours,
-          adjacency.WantNonManifold ? &adjacency.NonManifold : nullptr);
+          adjacency.WantNonManifold ? &adjacency.NonManifold : nullptr,
+          self->GetAutoOrientNormals());
       });
     clashes = orientation.Clashes;
     nonOrientable = orientation.NonOrientable;

@@ -458,6 +458,22 @@ TEST(OrientationKernel, ClashesAreThePolygonsOfTheDisagreeingPairsOnly)
   EXPECT_EQ(e.NonOrientable, 0);
   EXPECT_TRUE(e.Clashes.empty());
   EXPECT_EQ(e.Reverse, (std::vector<unsigned char>{ 0, 1, 1, 0 }));
+  EXPECT_TRUE(e.Component.empty() && e.OpenSlots.empty()) << "only asked for by AutoOrient";
+  // With the components: one each, the odd one clashing; the even one's open slots.
+  const phongvtk::Orientation oc =
+    phongvtk::ConsistentOrientation(3, offsets.data(), odd, nullptr, true);
+  EXPECT_EQ(oc.NonOrientable, 1);
+  EXPECT_EQ(oc.Component, (std::vector<vtkIdType>{ 0, 0, 0 }));
+  EXPECT_EQ(oc.ComponentClashes, (std::vector<unsigned char>{ 1 }));
+  const phongvtk::Orientation ec =
+    phongvtk::ConsistentOrientation(4, offsets4.data(), even, nullptr, true);
+  EXPECT_EQ(ec.Reverse, e.Reverse);
+  EXPECT_EQ(ec.Component, (std::vector<vtkIdType>{ 0, 0, 0, 0 }));
+  EXPECT_EQ(ec.ComponentFirst, (std::vector<vtkIdType>{ 0 }));
+  EXPECT_EQ(ec.ComponentClashes, (std::vector<unsigned char>{ 0 }));
+  const std::vector<std::pair<vtkIdType, vtkIdType>> open = { { 0, 2 }, { 1, 5 }, { 2, 8 },
+    { 3, 11 } };
+  EXPECT_EQ(ec.OpenSlots, open);
 }
 
 TEST(OrientationKernel, EdgeNeighboursOfAFanWithAFinAndABoundary)
