@@ -25,6 +25,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <string>
 
@@ -577,29 +578,33 @@ TEST_F(PhongMapper, GeneralShaderDrawsTheSameImage)
 }
 
 //------------------------------------------------------------------------------
-// Image baselines for a real mesh: CGAL's bunny (bunny00.off) with vtkPolygonNormals' cell and
-// point normals under three coloured lights, in the three shading modes. The modes must differ
-// visibly from each other (flat facets, Gouraud's interpolated highlights, Phong's).
+// Image baselines for real meshes: CGAL's bunny (bunny00.off) and fandisk (fandisk.off, a CAD
+// part with creases) with vtkPolygonNormals' cell and point normals under three coloured lights,
+// in the three shading modes. The modes must differ visibly from each other (flat facets,
+// Gouraud's interpolated highlights, Phong's).
 namespace
 {
-vtkSmartPointer<vtkPolyData> UnitBunny()
+/// CGAL's mesh `name` centred at the origin, diagonal of the bounds 2 (where the scenes' lights
+/// expect it), with the cell and point normals of vtkPolygonNormals set up by `configure`; with
+/// `turn`, rotated 35 degrees about x, then -40 about y (to show fandisk's top and creases).
+vtkSmartPointer<vtkPolyData> UnitMesh(const char* name,
+  const std::function<void(vtkPolygonNormals*)>& configure = {}, bool turn = false)
 {
   std::string error;
-  auto bunny = phongvtk_test::ReadOFF(phongvtk_test::CGALMeshPath("bunny00.off"), &error);
-  if (!bunny)
+  auto mesh = phongvtk_test::ReadOFF(phongvtk_test::CGALMeshPath(name), &error);
+  if (!mesh)
   {
     ADD_FAILURE() << error;
     return nullptr;
   }
-  // Centred at the origin, diagonal of the bounds 2: where the scenes' lights expect it.
   double bounds[6];
-  bunny->GetBounds(bounds);
+  mesh->GetBounds(bounds);
   const double centre[3] = { (bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,
     (bounds[4] + bounds[5]) / 2 };
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
     (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-  vtkPoints* points = bunny->GetPoints();
+  vtkPoints* points = mesh->GetPoints();
   for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
   {
     double p[3];
@@ -608,14 +613,33 @@ vtkSmartPointer<vtkPolyData> UnitBunny()
     {
       p[c] = (p[c] - centre[c]) * 2 / diagonal;
     }
+    if (turn)
+    {
+      const double a = vtkMath::RadiansFromDegrees(35.0), b = vtkMath::RadiansFromDegrees(-40.0);
+      const double y = std::cos(a) * p[1] - std::sin(a) * p[2];
+      const double z = std::sin(a) * p[1] + std::cos(a) * p[2];
+      const double x = std::cos(b) * p[0] + std::sin(b) * z;
+      p[2] = -std::sin(b) * p[0] + std::cos(b) * z;
+      p[0] = x;
+      p[1] = y;
+    }
     points->SetPoint(i, p);
   }
   vtkNew<vtkPolygonNormals> normals;
-  normals->SetInputData(bunny);
+  normals->SetInputData(mesh);
   normals->ComputeCellNormalsOn();
   normals->ComputePointNormalsOn();
+  if (configure)
+  {
+    configure(normals);
+  }
   normals->Update();
   return normals->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> UnitBunny()
+{
+  return UnitMesh("bunny00.off");
 }
 }
 
@@ -640,4 +664,35 @@ TEST_F(PhongMapper, BunnyMatchesItsBaselinesInTheThreeModes)
   }
   EXPECT_GT(MaxAbsDifference(images[VTK_FLAT], images[VTK_PHONG]), 20);
   EXPECT_GT(MaxAbsDifference(images[VTK_GOURAUD], images[VTK_PHONG]), 10);
+}
+
+TEST_F(PhongMapper, FandiskMatchesItsBaselinesInTheThreeModesWithCrispCreases)
+{
+  // Split at 30 degrees and oriented outward, as `phongvtk render` draws it: Gouraud and Phong
+  // shade the curved patches smoothly and keep every crease as sharp as flat shading does.
+  PHONGVTK_SKIP_WITHOUT_CGAL_MESHES();
+  auto split = [](vtkPolygonNormals* f)
+  {
+    f->SplittingOn();
+    f->AutoOrientNormalsOn();
+  };
+  auto fandisk = UnitMesh("fandisk.off", split, true);
+  auto rounded = UnitMesh("fandisk.off", {}, true);
+  ASSERT_NE(fandisk, nullptr);
+  ASSERT_NE(rounded, nullptr);
+  ASSERT_GT(fandisk->GetNumberOfPoints(), rounded->GetNumberOfPoints()) << "nothing was split";
+  const char* names[] = { "PhongFandiskFlat", "PhongFandiskGouraud", "PhongFandiskPhong" };
+  Image images[3];
+  for (int interpolation : { VTK_FLAT, VTK_GOURAUD, VTK_PHONG })
+  {
+    PhongScene scene(fandisk, ThreeColouredLights(), WarmMaterial(), Perspective(), interpolation);
+    scene.Window->SetSize(320, 320);
+    images[interpolation] = scene.Render();
+    EXPECT_TRUE(MatchesBaseline(images[interpolation], names[interpolation]));
+  }
+  EXPECT_GT(MaxAbsDifference(images[VTK_FLAT], images[VTK_PHONG]), 10);
+  // Without splitting the normals average across the creases: a visibly different picture.
+  PhongScene soft(rounded, ThreeColouredLights(), WarmMaterial(), Perspective(), VTK_PHONG);
+  soft.Window->SetSize(320, 320);
+  EXPECT_GT(MaxAbsDifference(soft.Render(), images[VTK_PHONG]), 40);
 }
