@@ -524,6 +524,15 @@ struct Adjacency
       this->Built = true;
     }
   }
+
+  /// Hands the memory back once nothing needs it any more.
+  void Release()
+  {
+    this->Links.Initialize();
+    std::vector<vtkIdType>().swap(this->Neighbours);
+    std::vector<phongvtk::NonManifoldPair>().swap(this->NonManifold);
+    this->Built = false;
+  }
 };
 
 /// Progress: splitting reports [0, SplitShare), the normals of the split mesh the rest.
@@ -611,6 +620,9 @@ vtkSmartPointer<vtkPolyData> SplitSharpEdges(vtkPolygonNormals* self, vtkPolyDat
       });
   }
   self->UpdateProgress(SplitShare);
+  // The polygons' normals have served: their memory goes before the copies' is taken.
+  std::vector<double>().swap(normals);
+  std::vector<unsigned char>().swap(status);
   return phongvtk::MeshWithCopies(input, split, self->GetComputeOriginalPointIds());
 }
 
@@ -890,6 +902,7 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
       output->ShallowCopy(source);
       points = source->GetPoints();
       progressStart = SplitShare;
+      adjacency.Release(); // the links and neighbours are not needed any more
     }
   }
 
