@@ -32,12 +32,50 @@ namespace phongvtk
 /// The polygons around every point (polygon indices of `polys`; every point id valid).
 using PolygonLinks = vtkStaticCellLinksTemplate<vtkIdType>;
 
+/**
+ * The links of `polys`. On one thread VTK's serial build (no atomics; each point's polygons come
+ * in increasing order, which the passes over them use); its threaded build otherwise.
+ */
 inline void BuildPolygonLinks(vtkPoints* points, vtkCellArray* polys, PolygonLinks& links)
 {
   vtkNew<vtkPolyData> surface;
   surface->SetPoints(points);
   surface->SetPolys(polys);
+  links.SetSequentialProcessing(Threads(polys->GetNumberOfCells()) == 1);
   links.BuildLinks(surface);
+}
+
+/**
+ * The polygons at a point (its links `cells[0 .. count)`), each once and in increasing order:
+ * the links themselves when they already are (a serial build), reversed when strictly
+ * decreasing, else sorted into `scratch`. Returns the first and sets `n`.
+ */
+inline const vtkIdType* DistinctSorted(
+  const vtkIdType* cells, vtkIdType count, std::vector<vtkIdType>& scratch, std::size_t& n)
+{
+  bool increasing = true, decreasing = true;
+  for (vtkIdType j = 1; j < count; ++j)
+  {
+    increasing = increasing && cells[j - 1] < cells[j];
+    decreasing = decreasing && cells[j - 1] > cells[j];
+  }
+  n = static_cast<std::size_t>(count);
+  if (increasing)
+  {
+    return cells;
+  }
+  scratch.assign(cells, cells + count);
+  if (decreasing)
+  {
+    std::reverse(scratch.begin(), scratch.end());
+  }
+  else
+  {
+    std::sort(scratch.begin(), scratch.end());
+    scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+    n = scratch.size();
+  }
+  return scratch.data();
 }
 
 /**
@@ -111,17 +149,13 @@ inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* 
           std::vector<vtkIdType>& faces = local.Faces;
           for (vtkIdType p = begin; p < end; ++p)
           {
-            const vtkIdType* cells = links.GetCells(p);
-            // A polygon that uses p twice is listed twice: each once, in any order of the links.
-            faces.assign(cells, cells + links.GetNumberOfCells(p));
-            if (!std::is_sorted(faces.begin(), faces.end()))
-            {
-              std::sort(faces.begin(), faces.end());
-            }
-            faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+            std::size_t numFaces;
+            const vtkIdType* atP =
+              DistinctSorted(links.GetCells(p), links.GetNumberOfCells(p), faces, numFaces);
             edges.clear();
-            for (const vtkIdType f : faces)
+            for (std::size_t i = 0; i < numFaces; ++i)
             {
+              const vtkIdType f = atP[i];
               const auto m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
               ForCornersAt(offsets, conn, f, p,
                 [&](vtkIdType k, vtkIdType previous, vtkIdType next)
@@ -136,47 +170,65 @@ inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* 
                   }
                 });
             }
-            std::sort(
-              edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.Q < b.Q; });
-            for (std::size_t e = 0; e < edges.size();)
+            // The edges to the same q form a group; a point has few, so each group is found by a
+            // scan (a sort of the edges cost more), and its later members are marked taken.
+            const std::size_t numEdges = edges.size();
+            for (std::size_t e = 0; e < numEdges; ++e)
             {
-              std::size_t last = e + 1;
-              while (last < edges.size() && edges[last].Q == edges[e].Q)
+              const vtkIdType q = edges[e].Q;
+              if (q < 0)
               {
-                ++last;
+                continue;
               }
-              if (last - e == 2 && edges[e].Polygon != edges[e + 1].Polygon)
+              std::size_t members = 1, second = e;
+              for (std::size_t j = e + 1; j < numEdges; ++j)
+              {
+                if (edges[j].Q == q)
+                {
+                  second = members == 1 ? j : second;
+                  ++members;
+                }
+              }
+              if (members == 2 && edges[e].Polygon != edges[second].Polygon)
               {
                 const Edge& a = edges[e];
-                const Edge& b = edges[e + 1];
+                const Edge& b = edges[second];
                 const vtkIdType same = a.Forward == b.Forward ? 1 : 0;
                 neighbours[static_cast<std::size_t>(offsets[a.Polygon] + a.Slot)] =
                   2 * b.Polygon + same;
                 neighbours[static_cast<std::size_t>(offsets[b.Polygon] + b.Slot)] =
                   2 * a.Polygon + same;
               }
-              else if (nonManifold && last - e >= 2)
+              else if (nonManifold && members >= 2)
               {
                 // Polygons then slots ascending: the smallest polygon's first edge comes first.
                 const Edge* first = &edges[e];
-                for (std::size_t i = e + 1; i < last; ++i)
+                for (std::size_t j = e + 1; j < numEdges; ++j)
                 {
-                  if (edges[i].Polygon < first->Polygon ||
-                    (edges[i].Polygon == first->Polygon && edges[i].Slot < first->Slot))
+                  if (edges[j].Q == q &&
+                    (edges[j].Polygon < first->Polygon ||
+                      (edges[j].Polygon == first->Polygon && edges[j].Slot < first->Slot)))
                   {
-                    first = &edges[i];
+                    first = &edges[j];
                   }
                 }
-                for (std::size_t i = e; i < last; ++i)
+                for (std::size_t j = e; j < numEdges; ++j)
                 {
-                  if (edges[i].Polygon != first->Polygon)
+                  if (edges[j].Q == q && edges[j].Polygon != first->Polygon)
                   {
                     local.Pairs.push_back({ first->Polygon, offsets[first->Polygon] + first->Slot,
-                      edges[i].Polygon, edges[i].Forward == first->Forward ? 1 : 0 });
+                      edges[j].Polygon, edges[j].Forward == first->Forward ? 1 : 0 });
                   }
                 }
               }
-              e = last;
+              for (std::size_t j = e + 1; members > 1 && j < numEdges; ++j)
+              {
+                if (edges[j].Q == q)
+                {
+                  edges[j].Q = -1;
+                  --members;
+                }
+              }
             }
           }
         });

@@ -82,13 +82,12 @@ struct PointRegions
     const DirectedFn& directed, const SmoothFn& smooth)
   {
     (void)p;
-    this->Faces.assign(cells, cells + count);
-    // The links of a sequential build come sorted, each polygon once unless it uses p twice.
-    if (!std::is_sorted(this->Faces.begin(), this->Faces.end()))
+    std::size_t distinct;
+    const vtkIdType* faces = DistinctSorted(cells, count, this->Faces, distinct);
+    if (faces == cells)
     {
-      std::sort(this->Faces.begin(), this->Faces.end());
+      this->Faces.assign(cells, cells + count);
     }
-    this->Faces.erase(std::unique(this->Faces.begin(), this->Faces.end()), this->Faces.end());
     const auto n = static_cast<std::int32_t>(this->Faces.size());
     this->Parent.resize(static_cast<std::size_t>(n));
     std::iota(this->Parent.begin(), this->Parent.end(), 0);

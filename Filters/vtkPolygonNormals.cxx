@@ -549,8 +549,9 @@ vtkSmartPointer<vtkPolyData> SplitSharpEdges(vtkPolygonNormals* self, vtkPolyDat
   const T* points, Adjacency& adjacency, vtkIdType& firstBadCell)
 {
   const vtkIdType numCells = input->GetNumberOfCells();
-  std::vector<double> normals(3 * static_cast<std::size_t>(numCells));
-  std::vector<unsigned char> status(static_cast<std::size_t>(numCells));
+  // Not zero-filled: the pass writes every cell's normal and status.
+  std::unique_ptr<double[]> normals(new double[3 * static_cast<std::size_t>(numCells)]);
+  std::unique_ptr<unsigned char[]> status(new unsigned char[static_cast<std::size_t>(numCells)]);
   Computation<T, double> faces;
   faces.Filter = self;
   faces.Input = input;
@@ -560,8 +561,8 @@ vtkSmartPointer<vtkPolyData> SplitSharpEdges(vtkPolygonNormals* self, vtkPolyDat
   faces.Weighting = self->GetPointWeighting();
   faces.PointNormals = false;
   faces.PieceInvariant = self->GetPieceInvariant();
-  faces.Out.Normals = normals.data();
-  faces.Out.Status = status.data();
+  faces.Out.Normals = normals.get();
+  faces.Out.Status = status.get();
   faces.ProgressScale = SplitShare / 2;
   if (!faces.Run(nullptr))
   {
@@ -598,8 +599,8 @@ vtkSmartPointer<vtkPolyData> SplitSharpEdges(vtkPolygonNormals* self, vtkPolyDat
         };
         auto smooth = [&](vtkIdType f1, vtkIdType f2)
         {
-          const double* n1 = normals.data() + 3 * (firstPoly + f1);
-          const double* n2 = normals.data() + 3 * (firstPoly + f2);
+          const double* n1 = normals.get() + 3 * (firstPoly + f1);
+          const double* n2 = normals.get() + 3 * (firstPoly + f2);
           if (!exact)
           {
             return phongvtk::FeatureEdgeFromNormals(n1, n2, c) == phongvtk::FeatureEdge::Smooth;
@@ -621,8 +622,8 @@ vtkSmartPointer<vtkPolyData> SplitSharpEdges(vtkPolygonNormals* self, vtkPolyDat
   }
   self->UpdateProgress(SplitShare);
   // The polygons' normals have served: their memory goes before the copies' is taken.
-  std::vector<double>().swap(normals);
-  std::vector<unsigned char>().swap(status);
+  normals.reset();
+  status.reset();
   return phongvtk::MeshWithCopies(input, split, self->GetComputeOriginalPointIds());
 }
 
