@@ -11,6 +11,7 @@
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkIdList.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -18,6 +19,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -131,6 +133,31 @@ inline vtkSmartPointer<vtkPolyData> SphereMesh(int resolution)
   mesh->DeepCopy(source->GetOutput());
   mesh->GetPointData()->Initialize();
   return mesh;
+}
+
+/// A Moebius strip of n quads.
+inline vtkSmartPointer<vtkPolyData> Moebius(int n)
+{
+  std::vector<Point> p;
+  for (int i = 0; i < n; ++i)
+  {
+    const double t = 2.0 * vtkMath::Pi() * i / n;
+    for (double s : { -0.3, 0.3 })
+    {
+      const double r = 1.0 + s * std::cos(t / 2);
+      p.push_back({ r * std::cos(t), r * std::sin(t), s * std::sin(t / 2) });
+    }
+  }
+  Cells cells;
+  for (int i = 0; i < n; ++i)
+  {
+    const vtkIdType a = 2 * i, b = 2 * i + 1;
+    // The last quad joins the strip to its start with a half twist.
+    const vtkIdType c = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+    const vtkIdType d = i + 1 < n ? 2 * (i + 1) : 1;
+    cells.Polys.push_back({ a, d, c, b });
+  }
+  return MakePolyData(p, cells);
 }
 
 /// Receives the error and warning events of a filter (what vtkTest::ErrorObserver does).

@@ -491,26 +491,7 @@ TEST(AutoOrient, TouchingComponents)
 
 TEST(AutoOrient, AMoebiusStripIsReportedAndLeftAsConsistencyLeavesIt)
 {
-  std::vector<Point> p;
-  const int n = 40;
-  for (int i = 0; i < n; ++i)
-  {
-    const double t = 2.0 * vtkMath::Pi() * i / n;
-    for (double s : { -0.3, 0.3 })
-    {
-      const double r = 1.0 + s * std::cos(t / 2);
-      p.push_back({ r * std::cos(t), r * std::sin(t), s * std::sin(t / 2) });
-    }
-  }
-  Cells cells;
-  for (int i = 0; i < n; ++i)
-  {
-    const vtkIdType a = 2 * i, b = 2 * i + 1;
-    const vtkIdType c = i + 1 < n ? 2 * (i + 1) + 1 : 0;
-    const vtkIdType d = i + 1 < n ? 2 * (i + 1) : 1;
-    cells.Polys.push_back({ a, d, c, b });
-  }
-  auto strip = MakePolyData(p, cells);
+  auto strip = phongvtk_test::Moebius(40);
   vtkNew<MessageObserver> messages;
   auto out = AutoOriented(strip, {}, messages);
   ASSERT_EQ(messages->Warnings.size(), 1u);

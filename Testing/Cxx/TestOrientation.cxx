@@ -39,6 +39,7 @@ using phongvtk_test::Cell;
 using phongvtk_test::Cells;
 using phongvtk_test::MakePolyData;
 using phongvtk_test::MessageObserver;
+using phongvtk_test::Moebius;
 using phongvtk_test::Point;
 using phongvtk_test::PolygonsOf;
 using phongvtk_test::SphereMesh;
@@ -103,31 +104,6 @@ int DisagreeingEdges(vtkPolyData* mesh)
     disagreeing += edge.second.size() == 2 && edge.second[0] == edge.second[1];
   }
   return disagreeing;
-}
-
-/// A Moebius strip of n quads.
-vtkSmartPointer<vtkPolyData> Moebius(int n)
-{
-  std::vector<Point> p;
-  for (int i = 0; i < n; ++i)
-  {
-    const double t = 2.0 * M_PI * i / n;
-    for (double s : { -0.3, 0.3 })
-    {
-      const double r = 1.0 + s * std::cos(t / 2);
-      p.push_back({ r * std::cos(t), r * std::sin(t), s * std::sin(t / 2) });
-    }
-  }
-  Cells cells;
-  for (int i = 0; i < n; ++i)
-  {
-    const vtkIdType a = 2 * i, b = 2 * i + 1;
-    // The last quad joins the strip to its start with a half twist.
-    const vtkIdType c = i + 1 < n ? 2 * (i + 1) + 1 : 0;
-    const vtkIdType d = i + 1 < n ? 2 * (i + 1) : 1;
-    cells.Polys.push_back({ a, d, c, b });
-  }
-  return MakePolyData(p, cells);
 }
 
 void ExpectSameBits(vtkDataArray* a, vtkDataArray* b, const std::string& what)
