@@ -16,10 +16,12 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPolygonNormals.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -178,6 +180,21 @@ public:
   std::vector<std::string> Errors;
   std::vector<std::string> Warnings;
 };
+
+/// The filter with `configure`, its warnings and errors collected.
+inline vtkSmartPointer<vtkPolyData> RunFilter(vtkPolyData* input,
+  const std::function<void(vtkPolygonNormals*)>& configure, MessageObserver* messages = nullptr)
+{
+  vtkNew<vtkPolygonNormals> filter;
+  vtkNew<MessageObserver> own;
+  (messages ? messages : own.GetPointer())->Watch(filter);
+  configure(filter);
+  filter->SetInputData(input);
+  filter->Update();
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->ShallowCopy(filter->GetOutput());
+  return output;
+}
 } // namespace phongvtk_test
 
 #endif

@@ -48,20 +48,18 @@ vtkSmartPointer<vtkPolyData> AutoOriented(vtkPolyData* input,
   const std::function<void(vtkPolygonNormals*)>& configure = {},
   MessageObserver* messages = nullptr)
 {
-  vtkNew<vtkPolygonNormals> filter;
-  vtkNew<MessageObserver> own;
-  (messages ? messages : own.GetPointer())->Watch(filter);
-  filter->AutoOrientNormalsOn();
-  filter->SetOutputPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-  if (configure)
-  {
-    configure(filter);
-  }
-  filter->SetInputData(input);
-  filter->Update();
-  auto output = vtkSmartPointer<vtkPolyData>::New();
-  output->ShallowCopy(filter->GetOutput());
-  return output;
+  return phongvtk_test::RunFilter(
+    input,
+    [&](vtkPolygonNormals* filter)
+    {
+      filter->AutoOrientNormalsOn();
+      filter->SetOutputPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+      if (configure)
+      {
+        configure(filter);
+      }
+    },
+    messages);
 }
 
 /// `mesh` with its polygons reversed: each with probability `share` (seeded), whole lists.

@@ -42,22 +42,8 @@ using phongvtk_test::MessageObserver;
 using phongvtk_test::Moebius;
 using phongvtk_test::Point;
 using phongvtk_test::PolygonsOf;
+using phongvtk_test::RunFilter;
 using phongvtk_test::SphereMesh;
-
-/// The filter with `configure`, its warnings and errors collected.
-vtkSmartPointer<vtkPolyData> RunFilter(vtkPolyData* input,
-  const std::function<void(vtkPolygonNormals*)>& configure, MessageObserver* messages = nullptr)
-{
-  vtkNew<vtkPolygonNormals> filter;
-  vtkNew<MessageObserver> own;
-  (messages ? messages : own.GetPointer())->Watch(filter);
-  configure(filter);
-  filter->SetInputData(input);
-  filter->Update();
-  auto output = vtkSmartPointer<vtkPolyData>::New();
-  output->ShallowCopy(filter->GetOutput());
-  return output;
-}
 
 /// `mesh` with a random share of its polygons reversed: VTK's way (the whole list backwards) or,
 /// with keepFirst, keeping the first point.
