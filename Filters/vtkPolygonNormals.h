@@ -39,6 +39,14 @@
  * depend on the order of the cells nor on the partition of the mesh among processes either: it is
  * a function of the set of its faces, their contributions summed exactly and rounded once.
  *
+ * In place of vtkPolyDataNormals (all off by default, so that cells and points pass through
+ * unchanged): Consistency reorders the polygons so that neighbours agree, AutoOrientNormals turns
+ * every component outward by the exact sign of its volume (cavities inward), NonManifoldTraversal
+ * joins components across non-manifold edges, FlipNormals reverses every polygon, and Splitting
+ * duplicates the points along edges sharper than FeatureAngle (decided exactly in EXACT), with
+ * `OriginalPointIds` mapping the copies back. A `Normals` array already on the input is never
+ * reused: the normals always follow the (reordered) polygons.
+ *
  * @sa vtkPolyDataNormals vtkTriangleMeshPointNormals vtkPolygon
  */
 #ifndef vtkPolygonNormals_h
