@@ -136,6 +136,7 @@ inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* 
     std::vector<Edge> Edges;
     std::vector<vtkIdType> Faces;
     std::vector<NonManifoldPair> Pairs;
+    std::vector<const Edge*> Members;
   };
   vtkSMPThreadLocal<Scratch> scratch;
   polys->Visit(RawCells{},
@@ -170,29 +171,14 @@ inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* 
                   }
                 });
             }
-            // The edges to the same q form a group; a point has few, so each group is found by a
-            // scan (a sort of the edges cost more), and its later members are marked taken.
-            const std::size_t numEdges = edges.size();
-            for (std::size_t e = 0; e < numEdges; ++e)
+            // The edges to the same q form a group: a manifold edge when two polygons, a
+            // non-manifold one when more (or one polygon twice).
+            auto group = [&](std::size_t members, const Edge* const* at)
             {
-              const vtkIdType q = edges[e].Q;
-              if (q < 0)
+              if (members == 2 && at[0]->Polygon != at[1]->Polygon)
               {
-                continue;
-              }
-              std::size_t members = 1, second = e;
-              for (std::size_t j = e + 1; j < numEdges; ++j)
-              {
-                if (edges[j].Q == q)
-                {
-                  second = members == 1 ? j : second;
-                  ++members;
-                }
-              }
-              if (members == 2 && edges[e].Polygon != edges[second].Polygon)
-              {
-                const Edge& a = edges[e];
-                const Edge& b = edges[second];
+                const Edge& a = *at[0];
+                const Edge& b = *at[1];
                 const vtkIdType same = a.Forward == b.Forward ? 1 : 0;
                 neighbours[static_cast<std::size_t>(offsets[a.Polygon] + a.Slot)] =
                   2 * b.Polygon + same;
@@ -202,32 +188,66 @@ inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* 
               else if (nonManifold && members >= 2)
               {
                 // Polygons then slots ascending: the smallest polygon's first edge comes first.
-                const Edge* first = &edges[e];
-                for (std::size_t j = e + 1; j < numEdges; ++j)
+                const Edge* first = at[0];
+                for (std::size_t j = 1; j < members; ++j)
                 {
-                  if (edges[j].Q == q &&
-                    (edges[j].Polygon < first->Polygon ||
-                      (edges[j].Polygon == first->Polygon && edges[j].Slot < first->Slot)))
+                  if (at[j]->Polygon < first->Polygon ||
+                    (at[j]->Polygon == first->Polygon && at[j]->Slot < first->Slot))
                   {
-                    first = &edges[j];
+                    first = at[j];
                   }
                 }
-                for (std::size_t j = e; j < numEdges; ++j)
+                for (std::size_t j = 0; j < members; ++j)
                 {
-                  if (edges[j].Q == q && edges[j].Polygon != first->Polygon)
+                  if (at[j]->Polygon != first->Polygon)
                   {
                     local.Pairs.push_back({ first->Polygon, offsets[first->Polygon] + first->Slot,
-                      edges[j].Polygon, edges[j].Forward == first->Forward ? 1 : 0 });
+                      at[j]->Polygon, at[j]->Forward == first->Forward ? 1 : 0 });
                   }
                 }
               }
-              for (std::size_t j = e + 1; members > 1 && j < numEdges; ++j)
+            };
+            std::vector<const Edge*>& members = local.Members;
+            const std::size_t numEdges = edges.size();
+            if (numEdges > 32)
+            {
+              // Many (a hub point): sorted by q, each group is a run.
+              std::sort(
+                edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.Q < b.Q; });
+              for (std::size_t e = 0; e < numEdges;)
+              {
+                members.clear();
+                std::size_t last = e;
+                while (last < numEdges && edges[last].Q == edges[e].Q)
+                {
+                  members.push_back(&edges[last++]);
+                }
+                group(members.size(), members.data());
+                e = last;
+              }
+              continue;
+            }
+            // Few (the rule): each group found by a scan, a sort cost more; its members taken.
+            for (std::size_t e = 0; e < numEdges; ++e)
+            {
+              const vtkIdType q = edges[e].Q;
+              if (q < 0)
+              {
+                continue;
+              }
+              members.clear();
+              members.push_back(&edges[e]);
+              for (std::size_t j = e + 1; j < numEdges; ++j)
               {
                 if (edges[j].Q == q)
                 {
-                  edges[j].Q = -1;
-                  --members;
+                  members.push_back(&edges[j]);
                 }
+              }
+              group(members.size(), members.data());
+              for (std::size_t j = 1; j < members.size(); ++j)
+              {
+                edges[static_cast<std::size_t>(members[j] - edges.data())].Q = -1;
               }
             }
           }

@@ -504,6 +504,20 @@ class CountingFilter:
         self.updates += 1
 
 
+def test_memory_harness_measures_a_filters_peak_in_a_child(environment):
+    # The sphere (mesh 0, always there): one Update()'s peak is at least what the split mesh's
+    # point normals and polygons take, and the output's arrays are counted apart.
+    done = subprocess.run([sys.executable, "-m", "phongvtk.memory", "--child", "0",
+                           "split + consistency DOUBLE"], env=environment, capture_output=True,
+                          text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    result = json.loads(done.stdout)
+    normals_mib = 998002 * 3 * 4 / 2**20  # the point normals alone, float
+    assert result["peak MiB"] > normals_mib
+    assert result["output MiB"] > normals_mib
+    assert result["backend"] in ("Sequential", "STDThread")
+
+
 def test_speed_harness_warms_up_and_calls_untimed_before_every_batch():
     from phongvtk import speed
     filters = {"a": CountingFilter(), "b": CountingFilter()}
