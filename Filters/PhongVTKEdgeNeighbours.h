@@ -25,6 +25,7 @@
 #include "vtkStaticCellLinksTemplate.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <vector>
 
 namespace phongvtk
@@ -111,32 +112,166 @@ struct NonManifoldPair
 
   bool operator<(const NonManifoldPair& b) const
   {
-    return this->Slot < b.Slot || (this->Slot == b.Slot && this->Other < b.Other);
+    return this->Slot < b.Slot ||
+      (this->Slot == b.Slot &&
+        (this->Other < b.Other || (this->Other == b.Other && this->Same < b.Same)));
   }
 };
 
 /**
- * The neighbour across every edge slot of `polys` (valid point ids, `links` theirs); with
- * `nonManifold`, also every polygon around each non-manifold edge paired with the smallest one
- * around it, sorted by slot.
+ * The fan of polygons around one point p: its polygons (`Faces`, sorted, each once) and its
+ * edges at p (`Edges`), each edge p-q of each polygon with q != p, sorted by q, then polygon,
+ * then slot (a total order: the same for any order of the links), so that the edges to one q
+ * form a group: a manifold edge when two distinct polygons, a non-manifold one when more (or one
+ * polygon twice). Every polygon having the edge p-q has p, so the whole group is in p's fan.
  */
-inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* polys,
-  PolygonLinks& links, std::vector<NonManifoldPair>* nonManifold = nullptr)
+struct PointFan
 {
-  std::vector<vtkIdType> neighbours(
-    static_cast<std::size_t>(polys->GetConnectivityArray()->GetNumberOfValues()), -1);
-  // Every edge p-q at p with q > p: q, the polygon, its slot, and 1 for p -> q or 0 for q -> p.
+  /// An edge p-q of polygon `Polygon` (index `Face` in Faces) in its edge slot `Slot` (corner
+  /// index), `Forward` 1 when it runs p -> q.
   struct Edge
   {
     vtkIdType Q, Polygon, Slot;
-    int Forward;
+    std::int32_t Face, Forward;
+
+    bool operator<(const Edge& b) const
+    {
+      return this->Q < b.Q ||
+        (this->Q == b.Q &&
+          (this->Polygon < b.Polygon || (this->Polygon == b.Polygon && this->Slot < b.Slot)));
+    }
   };
+
+  const vtkIdType* Faces = nullptr;
+  std::size_t NumberOfFaces = 0;
+  std::vector<Edge> Edges;
+
+  /**
+   * The fan of p from its links `cells[0 .. count)` in `offsets` and `conn`; with `after`, only
+   * the edges to points q > p (each edge is then found from one side only).
+   */
+  template <class Offsets, class Connectivity>
+  void Build(vtkIdType p, const vtkIdType* cells, vtkIdType count, const Offsets* offsets,
+    const Connectivity* conn, bool after)
+  {
+    this->Faces = DistinctSorted(cells, count, this->SortedFaces, this->NumberOfFaces);
+    this->Edges.clear();
+    for (std::size_t i = 0; i < this->NumberOfFaces; ++i)
+    {
+      const vtkIdType f = this->Faces[i];
+      const auto m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
+      ForCornersAt(offsets, conn, f, p,
+        [&](vtkIdType k, vtkIdType previous, vtkIdType next)
+        {
+          const vtkIdType least = after ? p + 1 : 0;
+          if (next != p && next >= least)
+          {
+            this->Edges.push_back({ next, f, k, static_cast<std::int32_t>(i), 1 });
+          }
+          if (previous != p && previous >= least)
+          {
+            this->Edges.push_back(
+              { previous, f, k == 0 ? m - 1 : k - 1, static_cast<std::int32_t>(i), 0 });
+          }
+        });
+    }
+    const std::size_t n = this->Edges.size();
+    if (n > 32)
+    {
+      std::sort(this->Edges.begin(), this->Edges.end()); // a hub point
+      return;
+    }
+    // Few (the rule): an insertion sort, which beats std::sort on a dozen.
+    Edge* e = this->Edges.data();
+    for (std::size_t i = 1; i < n; ++i)
+    {
+      const Edge x = e[i];
+      std::size_t j = i;
+      for (; j > 0 && x < e[j - 1]; --j)
+      {
+        e[j] = e[j - 1];
+      }
+      e[j] = x;
+    }
+  }
+
+  /// Calls fn(first, members) for every group of edges to one point q, in increasing q.
+  template <class Fn>
+  void ForGroups(Fn&& fn) const
+  {
+    const std::size_t n = this->Edges.size();
+    for (std::size_t e = 0; e < n;)
+    {
+      std::size_t last = e + 1;
+      while (last < n && this->Edges[last].Q == this->Edges[e].Q)
+      {
+        ++last;
+      }
+      fn(this->Edges.data() + e, last - e);
+      e = last;
+    }
+  }
+
+  /// Whether a group is a manifold edge (two distinct polygons).
+  static bool Manifold(const Edge* group, std::size_t members)
+  {
+    return members == 2 && group[0].Polygon != group[1].Polygon;
+  }
+
+private:
+  std::vector<vtkIdType> SortedFaces;
+};
+
+/**
+ * Writes what a group of edges p-q (PointFan) says about the edge slots: for a manifold edge,
+ * each polygon's slot holds the other (`2 g + s`); for a non-manifold one, with `pairs`, every
+ * polygon around it paired with the smallest.
+ */
+template <class Offsets>
+inline void RecordEdgeGroup(const PointFan::Edge* group, std::size_t members,
+  const Offsets* offsets, vtkIdType* neighbours, std::vector<NonManifoldPair>* pairs)
+{
+  if (PointFan::Manifold(group, members))
+  {
+    const PointFan::Edge& a = group[0];
+    const PointFan::Edge& b = group[1];
+    const vtkIdType same = a.Forward == b.Forward ? 1 : 0;
+    neighbours[static_cast<vtkIdType>(offsets[a.Polygon]) + a.Slot] = 2 * b.Polygon + same;
+    neighbours[static_cast<vtkIdType>(offsets[b.Polygon]) + b.Slot] = 2 * a.Polygon + same;
+  }
+  else if (pairs && members >= 2)
+  {
+    // Sorted by polygon then slot: the smallest polygon's first edge comes first.
+    const PointFan::Edge& first = group[0];
+    for (std::size_t j = 1; j < members; ++j)
+    {
+      if (group[j].Polygon != first.Polygon)
+      {
+        pairs->push_back(
+          { first.Polygon, static_cast<vtkIdType>(offsets[first.Polygon]) + first.Slot,
+            group[j].Polygon, group[j].Forward == first.Forward ? 1 : 0 });
+      }
+    }
+  }
+}
+
+/**
+ * Calls atPoint(p, fan, local) for every point p of `polys` (valid point ids, `links` theirs)
+ * with its fan (PointFan; with `after`, only the edges to larger points) and the calling thread's
+ * own `Local` (default-constructed, kept from point to point), from several threads, each point
+ * on its own. With `neighbours` (as many as the connectivity, filled with
+ * -1), the neighbour across every edge slot is written first; with `nonManifold` as well, every
+ * polygon around each non-manifold edge paired with the smallest one around it, sorted by slot.
+ */
+template <class Local, class AtPoint>
+void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links, bool after,
+  vtkIdType* neighbours, std::vector<NonManifoldPair>* nonManifold, const AtPoint& atPoint)
+{
   struct Scratch
   {
-    std::vector<Edge> Edges;
-    std::vector<vtkIdType> Faces;
+    PointFan Fan;
     std::vector<NonManifoldPair> Pairs;
-    std::vector<const Edge*> Members;
+    Local Own;
   };
   vtkSMPThreadLocal<Scratch> scratch;
   polys->Visit(RawCells{},
@@ -146,110 +281,23 @@ inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* 
         [&](vtkIdType begin, vtkIdType end)
         {
           Scratch& local = scratch.Local();
-          std::vector<Edge>& edges = local.Edges;
-          std::vector<vtkIdType>& faces = local.Faces;
+          PointFan& fan = local.Fan;
           for (vtkIdType p = begin; p < end; ++p)
           {
-            std::size_t numFaces;
-            const vtkIdType* atP =
-              DistinctSorted(links.GetCells(p), links.GetNumberOfCells(p), faces, numFaces);
-            edges.clear();
-            for (std::size_t i = 0; i < numFaces; ++i)
+            fan.Build(p, links.GetCells(p), links.GetNumberOfCells(p), offsets, conn, after);
+            if (neighbours)
             {
-              const vtkIdType f = atP[i];
-              const auto m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
-              ForCornersAt(offsets, conn, f, p,
-                [&](vtkIdType k, vtkIdType previous, vtkIdType next)
+              fan.ForGroups(
+                [&](const PointFan::Edge* group, std::size_t members)
                 {
-                  if (next > p)
+                  if (group->Q > p) // each edge from its smaller point
                   {
-                    edges.push_back({ next, f, k, 1 });
-                  }
-                  if (previous > p)
-                  {
-                    edges.push_back({ previous, f, k == 0 ? m - 1 : k - 1, 0 });
+                    RecordEdgeGroup(
+                      group, members, offsets, neighbours, nonManifold ? &local.Pairs : nullptr);
                   }
                 });
             }
-            // The edges to the same q form a group: a manifold edge when two polygons, a
-            // non-manifold one when more (or one polygon twice).
-            auto group = [&](std::size_t members, const Edge* const* at)
-            {
-              if (members == 2 && at[0]->Polygon != at[1]->Polygon)
-              {
-                const Edge& a = *at[0];
-                const Edge& b = *at[1];
-                const vtkIdType same = a.Forward == b.Forward ? 1 : 0;
-                neighbours[static_cast<std::size_t>(offsets[a.Polygon] + a.Slot)] =
-                  2 * b.Polygon + same;
-                neighbours[static_cast<std::size_t>(offsets[b.Polygon] + b.Slot)] =
-                  2 * a.Polygon + same;
-              }
-              else if (nonManifold && members >= 2)
-              {
-                // Polygons then slots ascending: the smallest polygon's first edge comes first.
-                const Edge* first = at[0];
-                for (std::size_t j = 1; j < members; ++j)
-                {
-                  if (at[j]->Polygon < first->Polygon ||
-                    (at[j]->Polygon == first->Polygon && at[j]->Slot < first->Slot))
-                  {
-                    first = at[j];
-                  }
-                }
-                for (std::size_t j = 0; j < members; ++j)
-                {
-                  if (at[j]->Polygon != first->Polygon)
-                  {
-                    local.Pairs.push_back({ first->Polygon, offsets[first->Polygon] + first->Slot,
-                      at[j]->Polygon, at[j]->Forward == first->Forward ? 1 : 0 });
-                  }
-                }
-              }
-            };
-            std::vector<const Edge*>& members = local.Members;
-            const std::size_t numEdges = edges.size();
-            if (numEdges > 32)
-            {
-              // Many (a hub point): sorted by q, each group is a run.
-              std::sort(
-                edges.begin(), edges.end(), [](const Edge& a, const Edge& b) { return a.Q < b.Q; });
-              for (std::size_t e = 0; e < numEdges;)
-              {
-                members.clear();
-                std::size_t last = e;
-                while (last < numEdges && edges[last].Q == edges[e].Q)
-                {
-                  members.push_back(&edges[last++]);
-                }
-                group(members.size(), members.data());
-                e = last;
-              }
-              continue;
-            }
-            // Few (the rule): each group found by a scan, a sort cost more; its members taken.
-            for (std::size_t e = 0; e < numEdges; ++e)
-            {
-              const vtkIdType q = edges[e].Q;
-              if (q < 0)
-              {
-                continue;
-              }
-              members.clear();
-              members.push_back(&edges[e]);
-              for (std::size_t j = e + 1; j < numEdges; ++j)
-              {
-                if (edges[j].Q == q)
-                {
-                  members.push_back(&edges[j]);
-                }
-              }
-              group(members.size(), members.data());
-              for (std::size_t j = 1; j < members.size(); ++j)
-              {
-                edges[static_cast<std::size_t>(members[j] - edges.data())].Q = -1;
-              }
-            }
+            atPoint(p, fan, local.Own);
           }
         });
     });
@@ -262,28 +310,24 @@ inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* 
     }
     std::sort(nonManifold->begin(), nonManifold->end());
   }
-  return neighbours;
 }
 
 /**
- * The neighbours after the polygons marked in `reverse` are reversed keeping their first point
- * ((p0, p(n-1), ..., p1)): their new edge j is their old edge n - 1 - j. The polygons across stay
- * right; the same-direction bits are those of before.
+ * The neighbour across every edge slot of `polys` (valid point ids, `links` theirs); with
+ * `nonManifold`, also every polygon around each non-manifold edge paired with the smallest one
+ * around it, sorted by slot.
  */
-inline void ReverseEdgeSlots(std::vector<vtkIdType>& neighbours, vtkCellArray* polys,
-  const std::vector<unsigned char>& reverse)
+inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* polys,
+  PolygonLinks& links, std::vector<NonManifoldPair>* nonManifold = nullptr)
 {
-  polys->Visit(RawCells{},
-    [&](const auto* offsets, const auto*)
-    {
-      for (vtkIdType f = 0; f < polys->GetNumberOfCells(); ++f)
-      {
-        if (reverse[static_cast<std::size_t>(f)])
-        {
-          std::reverse(neighbours.begin() + offsets[f], neighbours.begin() + offsets[f + 1]);
-        }
-      }
-    });
+  std::vector<vtkIdType> neighbours(
+    static_cast<std::size_t>(polys->GetConnectivityArray()->GetNumberOfValues()), -1);
+  struct Nothing
+  {
+  };
+  ForPointFans<Nothing>(numPoints, polys, links, true, neighbours.data(), nonManifold,
+    [](vtkIdType, const PointFan&, Nothing&) {});
+  return neighbours;
 }
 
 } // namespace phongvtk

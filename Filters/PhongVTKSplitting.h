@@ -49,9 +49,10 @@ struct SplitPolygons
 };
 
 /**
- * The regions of the polygons around one point: `Faces` (the polygons using the point, sorted,
- * each once) and `Label` of each (0 for the first region and for polygons without a direction,
- * 1, 2, ... for the regions whose copies are appended), `Regions` their number.
+ * The regions of the polygons around one point: the `Label` of each of its polygons (sorted,
+ * each once: `Faces` when given its links, the fan's when given a PointFan), 0 for the first
+ * region and for polygons without a direction, 1, 2, ... for the regions whose copies are
+ * appended; `Regions` their number.
  */
 struct PointRegions
 {
@@ -88,9 +89,8 @@ struct PointRegions
     {
       this->Faces.assign(cells, cells + count);
     }
+    this->Start(this->Faces.data(), this->Faces.size());
     const auto n = static_cast<std::int32_t>(this->Faces.size());
-    this->Parent.resize(static_cast<std::size_t>(n));
-    std::iota(this->Parent.begin(), this->Parent.end(), 0);
     for (std::int32_t a = 0; a < n; ++a)
     {
       const vtkIdType fa = this->Faces[a];
@@ -106,20 +106,91 @@ struct PointRegions
           {
             return;
           }
-          const auto b = this->IndexOf(fb);
-          const std::int32_t ra = this->Root(a);
-          const std::int32_t rb = this->Root(b);
-          this->Parent[std::max(ra, rb)] = std::min(ra, rb);
+          this->Join(a, this->IndexOf(fb));
         });
     }
-    // Faces are sorted, so regions are met in the order of their smallest polygon.
-    this->Label.assign(static_cast<std::size_t>(n), 0);
+    this->Finish(directed);
+  }
+
+  /**
+   * Groups the polygons of `fan` (PointFan, with every edge at its point): two polygons join
+   * across each manifold edge of the fan when both have a direction (`directed(f)`) and
+   * `smooth(f1, f2, same)` says the edge is smooth, `same` when both run along it the same way.
+   */
+  template <class DirectedFn, class SmoothFn>
+  void Compute(const PointFan& fan, const DirectedFn& directed, const SmoothFn& smooth)
+  {
+    this->Start(fan.Faces, fan.NumberOfFaces);
+    fan.ForGroups(
+      [&](const PointFan::Edge* group, std::size_t members)
+      {
+        if (!PointFan::Manifold(group, members))
+        {
+          return;
+        }
+        const PointFan::Edge& a = group[0];
+        const PointFan::Edge& b = group[1];
+        if (directed(a.Polygon) && directed(b.Polygon) &&
+          smooth(a.Polygon, b.Polygon, a.Forward == b.Forward))
+        {
+          this->Join(a.Face, b.Face);
+        }
+      });
+    this->Finish(directed);
+  }
+
+  /// The index of polygon f (one of Faces) in Faces: a linear search, as a point has few.
+  std::int32_t IndexOf(vtkIdType f) const
+  {
+    const vtkIdType* faces = this->FaceList;
+    const auto n = static_cast<std::int32_t>(this->NumberOfFaces);
+    if (n > 16)
+    {
+      return static_cast<std::int32_t>(std::lower_bound(faces, faces + n, f) - faces);
+    }
+    std::int32_t i = 0;
+    while (faces[i] != f)
+    {
+      ++i;
+    }
+    return i;
+  }
+
+  /// The label of polygon f (one of Faces).
+  std::int32_t LabelOf(vtkIdType f) const { return this->Label[this->IndexOf(f)]; }
+
+private:
+  const vtkIdType* FaceList = nullptr; // Faces' data, or the fan's
+  std::size_t NumberOfFaces = 0;
+
+  void Start(const vtkIdType* faces, std::size_t n)
+  {
+    this->FaceList = faces;
+    this->NumberOfFaces = n;
+    this->Parent.resize(n);
+    std::iota(this->Parent.begin(), this->Parent.end(), 0);
+  }
+
+  void Join(std::int32_t a, std::int32_t b)
+  {
+    const std::int32_t ra = this->Root(a);
+    const std::int32_t rb = this->Root(b);
+    this->Parent[std::max(ra, rb)] = std::min(ra, rb);
+  }
+
+  /// The labels from the joins: faces are sorted, so regions are met in the order of their
+  /// smallest polygon.
+  template <class DirectedFn>
+  void Finish(const DirectedFn& directed)
+  {
+    const auto n = static_cast<std::int32_t>(this->NumberOfFaces);
+    this->Label.resize(this->NumberOfFaces);
     this->Regions = 0;
-    std::vector<std::int32_t>& labelOfRoot = this->Parent; // reused once the roots are known
     for (std::int32_t i = 0; i < n; ++i)
     {
-      this->Label[i] = directed(this->Faces[i]) ? this->Root(i) : -1;
+      this->Label[i] = directed(this->FaceList[i]) ? this->Root(i) : -1;
     }
+    std::vector<std::int32_t>& labelOfRoot = this->Parent; // reused once the roots are known
     std::fill(labelOfRoot.begin(), labelOfRoot.end(), -1);
     for (std::int32_t i = 0; i < n; ++i)
     {
@@ -136,95 +207,106 @@ struct PointRegions
       this->Label[i] = labelOfRoot[root];
     }
   }
-
-  /// The index of polygon f (one of Faces) in Faces: a linear search, as a point has few.
-  std::int32_t IndexOf(vtkIdType f) const
-  {
-    const vtkIdType* faces = this->Faces.data();
-    const auto n = static_cast<std::int32_t>(this->Faces.size());
-    if (n > 16)
-    {
-      return static_cast<std::int32_t>(std::lower_bound(faces, faces + n, f) - faces);
-    }
-    std::int32_t i = 0;
-    while (faces[i] != f)
-    {
-      ++i;
-    }
-    return i;
-  }
-
-  /// The label of polygon f (one of Faces).
-  std::int32_t LabelOf(vtkIdType f) const { return this->Label[this->IndexOf(f)]; }
 };
 
 /**
- * Splits the points of `polys` (every point id valid; `links` and `neighbours` theirs,
- * PhongVTKEdgeNeighbours.h) at sharp edges. `directed(f)` and `smooth(f1, f2)` as for
- * PointRegions, f the index of a polygon in `polys`; both are called from several threads. The
- * points are taken in parallel, each on its own: the same result for any number of threads.
- * Without a split point the polygons are `polys` itself.
+ * The regions of every point: the label of every link (point, polygon) and the number of copies
+ * of every point (`Copies[p + 1]`, then summed into the first copy's number).
+ */
+struct RegionLabels
+{
+  std::vector<std::int32_t> LinkLabel;
+  std::vector<vtkIdType> Copies;
+
+  /// Keeps what `regions` (of point p, whose links are `cells[0 .. count)` from `first`) says.
+  void Store(vtkIdType p, const vtkIdType* cells, vtkIdType count, std::size_t first,
+    const PointFan& fan, const PointRegions& regions)
+  {
+    this->Copies[static_cast<std::size_t>(p) + 1] = std::max<vtkIdType>(regions.Regions - 1, 0);
+    std::int32_t* label = this->LinkLabel.data() + first;
+    if (fan.Faces == cells) // the links were sorted and distinct: the labels are theirs
+    {
+      std::copy_n(regions.Label.data(), count, label);
+      return;
+    }
+    for (vtkIdType j = 0; j < count; ++j)
+    {
+      label[j] = regions.LabelOf(cells[j]);
+    }
+  }
+};
+
+/**
+ * Each point's regions (PointRegions) from its fan of `polys` (every point id valid; `links`
+ * theirs), `directed(f)` and `smooth(f1, f2, same)` (both called from several threads, f the
+ * index of a polygon in `polys`, `same` when both run along their edge the same way). The points
+ * are taken in parallel, each on its own: the same result for any number of threads. The fans
+ * give the neighbours across the edges on the way: with `neighbours` (and `nonManifold`), they
+ * are written as EdgeNeighbours writes them.
  */
 template <class DirectedFn, class SmoothFn>
-SplitPolygons SplitAtSharpEdges(vtkPoints* points, vtkCellArray* polys, PolygonLinks& links,
-  const std::vector<vtkIdType>& neighbours, const DirectedFn& directed, const SmoothFn& smooth)
+RegionLabels SharpEdgeRegions(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
+  vtkIdType* neighbours, std::vector<NonManifoldPair>* nonManifold, const DirectedFn& directed,
+  const SmoothFn& smooth)
 {
-  const vtkIdType numPoints = points->GetNumberOfPoints();
-  const vtkIdType numPolys = polys->GetNumberOfCells();
+  RegionLabels labels;
+  labels.LinkLabel.resize(static_cast<std::size_t>(links.GetLinksSize()));
+  labels.Copies.assign(static_cast<std::size_t>(numPoints) + 1, 0);
+  ForPointFans<PointRegions>(numPoints, polys, links, false, neighbours, nonManifold,
+    [&](vtkIdType p, const PointFan& fan, PointRegions& regions)
+    {
+      const vtkIdType count = links.GetNumberOfCells(p);
+      const auto first = static_cast<std::size_t>(links.GetOffset(p));
+      if (count < 2)
+      {
+        std::fill_n(labels.LinkLabel.begin() + static_cast<std::ptrdiff_t>(first), count, 0);
+        return;
+      }
+      regions.Compute(fan, directed, smooth);
+      labels.Store(p, links.GetCells(p), count, first, fan, regions);
+    });
+  return labels;
+}
 
-  // First pass: each point's regions; the label of every link (point, polygon) is kept.
-  const vtkIdType linkCount = links.GetLinksSize();
-  std::vector<std::int32_t> linkLabel(static_cast<std::size_t>(linkCount));
-  std::vector<vtkIdType> copies(static_cast<std::size_t>(numPoints) + 1, 0);
-  vtkSMPThreadLocal<PointRegions> scratch;
+/**
+ * Decides the regions of the points `redo` (sorted, each once) again, as SharpEdgeRegions does:
+ * after the polygons were reordered, for the points of the polygons whose edges still disagree.
+ */
+template <class DirectedFn, class SmoothFn>
+void RedoRegions(const std::vector<vtkIdType>& redo, vtkCellArray* polys, PolygonLinks& links,
+  RegionLabels& labels, const DirectedFn& directed, const SmoothFn& smooth)
+{
+  PointFan fan;
+  PointRegions regions;
   polys->Visit(RawCells{},
     [&](const auto* offsets, const auto* conn)
     {
-      phongvtk::For(0, numPoints, numPolys,
-        [&](vtkIdType begin, vtkIdType end)
+      for (vtkIdType p : redo)
+      {
+        const vtkIdType count = links.GetNumberOfCells(p);
+        if (count < 2)
         {
-          PointRegions& regions = scratch.Local();
-          for (vtkIdType p = begin; p < end; ++p)
-          {
-            const vtkIdType count = links.GetNumberOfCells(p);
-            const vtkIdType* cells = links.GetCells(p);
-            const std::size_t first = static_cast<std::size_t>(links.GetOffset(p));
-            if (count < 2)
-            {
-              std::fill_n(linkLabel.begin() + static_cast<std::ptrdiff_t>(first), count, 0);
-              continue;
-            }
-            regions.Compute(
-              p, cells, count,
-              [&](vtkIdType f, auto&& fn)
-              {
-                const vtkIdType m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
-                ForCornersAt(offsets, conn, f, p,
-                  [&](vtkIdType k, vtkIdType, vtkIdType)
-                  {
-                    // The edges k (to the next corner) and k - 1 (from the previous one).
-                    for (vtkIdType slot : { k, k == 0 ? m - 1 : k - 1 })
-                    {
-                      const vtkIdType across = neighbours[static_cast<std::size_t>(
-                        static_cast<vtkIdType>(offsets[f]) + slot)];
-                      if (across >= 0)
-                      {
-                        fn(across >> 1);
-                      }
-                    }
-                  });
-              },
-              directed, smooth);
-            copies[static_cast<std::size_t>(p) + 1] = std::max<vtkIdType>(regions.Regions - 1, 0);
-            for (vtkIdType j = 0; j < count; ++j)
-            {
-              linkLabel[first + static_cast<std::size_t>(j)] = regions.LabelOf(cells[j]);
-            }
-          }
-        });
+          continue;
+        }
+        fan.Build(p, links.GetCells(p), count, offsets, conn, false);
+        regions.Compute(fan, directed, smooth);
+        labels.Store(
+          p, links.GetCells(p), count, static_cast<std::size_t>(links.GetOffset(p)), fan, regions);
+      }
     });
+}
 
-  // Copies are numbered point by point: copy (p, r) is numPoints + start[p] + r - 1.
+/**
+ * The polygons of `polys` (the same polygons as when `labels` were decided, reordered or not;
+ * `links` theirs) with each point's polygons of region r > 0 referring to its copy r, the
+ * copies numbered point by point. Without a split point the polygons are `polys` itself.
+ */
+inline SplitPolygons ApplyRegions(
+  vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links, RegionLabels& labels)
+{
+  const vtkIdType numPolys = polys->GetNumberOfCells();
+  std::vector<vtkIdType>& copies = labels.Copies;
+  // Copy (p, r) is numPoints + copies[p] + r - 1.
   std::partial_sum(copies.begin(), copies.end(), copies.begin());
   SplitPolygons result;
   const vtkIdType numCopies = copies.back();
@@ -240,8 +322,8 @@ SplitPolygons SplitAtSharpEdges(vtkPoints* points, vtkCellArray* polys, PolygonL
   {
     result.Polys->ConvertTo64BitStorage();
   }
-  // Second pass: each point's polygons of region r > 0 refer to its copy r. A corner belongs to
-  // exactly one point, so the writes never meet; corners are found in the input's ids.
+  // A corner belongs to exactly one point, so the writes never meet; corners are found in the
+  // input's ids.
   polys->Visit(RawCells{},
     [&](const auto* offsets, const auto* conn)
     {
@@ -267,7 +349,7 @@ SplitPolygons SplitAtSharpEdges(vtkPoints* points, vtkCellArray* polys, PolygonL
                 const std::size_t first = static_cast<std::size_t>(links.GetOffset(p));
                 for (vtkIdType j = 0; j < count; ++j)
                 {
-                  const std::int32_t label = linkLabel[first + static_cast<std::size_t>(j)];
+                  const std::int32_t label = labels.LinkLabel[first + static_cast<std::size_t>(j)];
                   if (label == 0)
                   {
                     continue;

@@ -503,35 +503,57 @@ void vtkPolygonNormals::SetOutputPrecision(int precision)
 //------------------------------------------------------------------------------
 namespace
 {
-/// The polygons around every point and across every edge (PhongVTKEdgeNeighbours.h), built
-/// once for Consistency and Splitting: reversing polygons keeps the links, and the neighbours
-/// follow with ReverseEdgeSlots.
+/// The polygons around every point (PhongVTKEdgeNeighbours.h), built once for Consistency and
+/// Splitting (reversing polygons keeps them), and the polygons across every edge, for
+/// Consistency.
 struct Adjacency
 {
   phongvtk::PolygonLinks Links;
+  bool LinksBuilt = false;
+  bool WantNeighbours = false;  // Consistency or AutoOrientNormals
+  bool WantNonManifold = false; // and NonManifoldTraversal: the pairs across non-manifold edges
   std::vector<vtkIdType> Neighbours;
-  bool WantNonManifold = false; // NonManifoldTraversal: the pairs across non-manifold edges
   std::vector<phongvtk::NonManifoldPair> NonManifold;
-  bool Built = false;
+  bool NeighboursBuilt = false;
 
-  void Build(vtkPolyData* mesh)
+  void BuildLinks(vtkPolyData* mesh)
   {
-    if (!this->Built)
+    if (!this->LinksBuilt)
     {
       phongvtk::BuildPolygonLinks(mesh->GetPoints(), mesh->GetPolys(), this->Links);
-      this->Neighbours = phongvtk::EdgeNeighbours(mesh->GetNumberOfPoints(), mesh->GetPolys(),
-        this->Links, this->WantNonManifold ? &this->NonManifold : nullptr);
-      this->Built = true;
+      this->LinksBuilt = true;
     }
   }
 
-  /// Hands the memory back once nothing needs it any more.
-  void Release()
+  /// The neighbours' memory, every slot -1, for a pass over the fans to fill.
+  vtkIdType* NeighboursToFill(vtkPolyData* mesh)
   {
-    this->Links.Initialize();
+    if (!this->WantNeighbours)
+    {
+      return nullptr;
+    }
+    this->Neighbours.assign(
+      static_cast<std::size_t>(mesh->GetPolys()->GetConnectivityArray()->GetNumberOfValues()), -1);
+    this->NeighboursBuilt = true;
+    return this->Neighbours.data();
+  }
+
+  void BuildNeighbours(vtkPolyData* mesh)
+  {
+    if (!this->NeighboursBuilt)
+    {
+      this->BuildLinks(mesh);
+      this->Neighbours = phongvtk::EdgeNeighbours(mesh->GetNumberOfPoints(), mesh->GetPolys(),
+        this->Links, this->WantNonManifold ? &this->NonManifold : nullptr);
+      this->NeighboursBuilt = true;
+    }
+  }
+
+  /// Hands the neighbours' memory back once the polygons are ordered.
+  void ReleaseNeighbours()
+  {
     std::vector<vtkIdType>().swap(this->Neighbours);
     std::vector<phongvtk::NonManifoldPair>().swap(this->NonManifold);
-    this->Built = false;
   }
 };
 
@@ -539,93 +561,184 @@ struct Adjacency
 constexpr double SplitShare = 0.3;
 
 /**
- * Splitting (the Splitting option): the polygons' unit normals and status in the accuracy mode,
- * in double; the regions around every point (PhongVTKSplitting.h), the edges between them
- * decided as PhongVTKFeatureAngle.h says; and the mesh with the copies appended. Null when a
- * cell refers to a point that does not exist (firstBadCell names it).
+ * Splitting (the Splitting option) in two stages around the reordering of the polygons. First
+ * the polygons' unit normals and status in the accuracy mode, in double, of the polygons as
+ * given, and the regions around every point (PhongVTKSplitting.h), the edges between them
+ * decided as PhongVTKFeatureAngle.h says; then the mesh with the copies appended.
+ *
+ * The edges are decided before the polygons are reordered, on the normals of the polygons as
+ * given: a polygon reversed by Consistency, AutoOrientNormals or FlipNormals has the negated
+ * area vector (exactly; for a triangle even in floating point), so an edge is decided on
+ * n1 . (-n2) where the two polygons will have opposite normals relative to each other. With
+ * Consistency that is every manifold edge along which the two polygons run the same way but for
+ * the edges left disagreeing on a non-orientable component, whose points are decided again
+ * once the reordering is known (Redo). The fans are walked once for both: the same pass writes
+ * the neighbours Consistency needs.
  */
 template <class T>
-vtkSmartPointer<vtkPolyData> SplitSharpEdges(vtkPolygonNormals* self, vtkPolyData* input,
-  const T* points, Adjacency& adjacency, vtkIdType& firstBadCell)
+struct SharpEdges
 {
-  const vtkIdType numCells = input->GetNumberOfCells();
-  // Not zero-filled: the pass writes every cell's normal and status.
-  std::unique_ptr<double[]> normals(new double[3 * static_cast<std::size_t>(numCells)]);
-  std::unique_ptr<unsigned char[]> status(new unsigned char[static_cast<std::size_t>(numCells)]);
-  Computation<T, double> faces;
-  faces.Filter = self;
-  faces.Input = input;
-  faces.Points = points;
-  faces.NumberOfPoints = input->GetNumberOfPoints();
-  faces.AccuracyMode = self->GetAccuracy();
-  faces.Weighting = self->GetPointWeighting();
-  faces.PointNormals = false;
-  faces.PieceInvariant = self->GetPieceInvariant();
-  faces.Out.Normals = normals.get();
-  faces.Out.Status = status.get();
-  faces.ProgressScale = SplitShare / 2;
-  if (!faces.Run(nullptr))
+  vtkPolygonNormals* Self;
+  vtkPolyData* Input;
+  const T* Points;
+  std::unique_ptr<double[]> Normals;
+  std::unique_ptr<unsigned char[]> Status;
+  vtkIdType FirstPoly = 0;
+  phongvtk::RegionLabels Labels;
+
+  /// Whether polygon f has a direction (a non-zero, finite area vector).
+  bool Directed(vtkIdType f) const
   {
-    firstBadCell = faces.FirstBadCell;
-    return nullptr;
+    return this->Status[static_cast<std::size_t>(this->FirstPoly + f)] == phongvtk::StatusOk;
   }
-  if (self->GetAbortExecute())
+
+  /// Whether the edge between polygons f1 and f2 is smooth, with f2 reversed relative to f1 when
+  /// `opposite`.
+  template <class Offsets, class Connectivity>
+  bool Smooth(vtkIdType f1, vtkIdType f2, bool opposite, const Offsets* offsets,
+    const Connectivity* conn, double c) const
   {
-    return input;
+    const double* n1 = this->Normals.get() + 3 * (this->FirstPoly + f1);
+    const double* m2 = this->Normals.get() + 3 * (this->FirstPoly + f2);
+    const double n2[3] = { opposite ? -m2[0] : m2[0], opposite ? -m2[1] : m2[1],
+      opposite ? -m2[2] : m2[2] };
+    if (this->Self->GetAccuracy() != vtkPolygonNormals::EXACT)
+    {
+      return phongvtk::FeatureEdgeFromNormals(n1, n2, c) == phongvtk::FeatureEdge::Smooth;
+    }
+    const phongvtk::FeatureEdge edge = phongvtk::CertifiedFeatureEdge(n1, n2, c);
+    if (edge != phongvtk::FeatureEdge::Undecided)
+    {
+      return edge == phongvtk::FeatureEdge::Smooth;
+    }
+    // Exactly: the coordinates of both, the second reversed keeping its first point (its area
+    // vector negated exactly) when opposite.
+    auto coordinates = [&](vtkIdType f, bool reverse, std::vector<double>& xyz)
+    {
+      const std::int64_t n = offsets[f + 1] - offsets[f];
+      xyz.resize(static_cast<std::size_t>(3 * n));
+      for (std::int64_t i = 0; i < n; ++i)
+      {
+        const std::int64_t corner = reverse && i > 0 ? n - i : i;
+        const auto id = static_cast<std::int64_t>(conn[offsets[f] + corner]);
+        for (int j = 0; j < 3; ++j)
+        {
+          xyz[static_cast<std::size_t>(3 * i + j)] = static_cast<double>(this->Points[3 * id + j]);
+        }
+      }
+      return n;
+    };
+    std::vector<double> xyz1, xyz2;
+    const std::int64_t k1 = coordinates(f1, false, xyz1);
+    const std::int64_t k2 = coordinates(f2, opposite, xyz2);
+    return !phongvtk::detail::ExactFeatureEdgeIsSharp(xyz1.data(), k1, xyz2.data(), k2, c);
   }
-  phongvtk::SplitPolygons split;
-  if (input->GetNumberOfPolys() > 0)
+
+  double Cosine() const
   {
-    const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
-    const double c = std::cos(vtkMath::RadiansFromDegrees(self->GetFeatureAngle()));
-    const bool exact = self->GetAccuracy() == vtkPolygonNormals::EXACT;
-    input->GetPolys()->Visit(RawCells{},
+    return std::cos(vtkMath::RadiansFromDegrees(this->Self->GetFeatureAngle()));
+  }
+
+  /**
+   * The first stage: the normals and the regions, and on the way the neighbours `adjacency`
+   * wants. `consistent` when the polygons will be made to agree. False when a cell refers to a
+   * point that does not exist (firstBadCell names it).
+   */
+  bool Decide(Adjacency& adjacency, bool consistent, vtkIdType& firstBadCell)
+  {
+    const vtkIdType numCells = this->Input->GetNumberOfCells();
+    // Not zero-filled: the pass writes every cell's normal and status.
+    this->Normals.reset(new double[3 * static_cast<std::size_t>(numCells)]);
+    this->Status.reset(new unsigned char[static_cast<std::size_t>(numCells)]);
+    Computation<T, double> faces;
+    faces.Filter = this->Self;
+    faces.Input = this->Input;
+    faces.Points = this->Points;
+    faces.NumberOfPoints = this->Input->GetNumberOfPoints();
+    faces.AccuracyMode = this->Self->GetAccuracy();
+    faces.Weighting = this->Self->GetPointWeighting();
+    faces.PointNormals = false;
+    faces.PieceInvariant = this->Self->GetPieceInvariant();
+    faces.Out.Normals = this->Normals.get();
+    faces.Out.Status = this->Status.get();
+    faces.ProgressScale = SplitShare / 2;
+    if (!faces.Run(nullptr))
+    {
+      firstBadCell = faces.FirstBadCell;
+      return false;
+    }
+    this->FirstPoly = this->Input->GetNumberOfVerts() + this->Input->GetNumberOfLines();
+    const vtkIdType numPolys = this->Input->GetNumberOfPolys();
+    if (numPolys == 0 || this->Self->GetAbortExecute())
+    {
+      return true;
+    }
+    const double c = this->Cosine();
+    adjacency.BuildLinks(this->Input);
+    vtkCellArray* polys = this->Input->GetPolys();
+    polys->Visit(RawCells{},
       [&](const auto* offsets, const auto* conn)
       {
-        auto directed = [&](vtkIdType f)
+        this->Labels = phongvtk::SharpEdgeRegions(
+          this->Input->GetNumberOfPoints(), polys, adjacency.Links,
+          adjacency.NeighboursToFill(this->Input),
+          adjacency.WantNonManifold ? &adjacency.NonManifold : nullptr,
+          [&](vtkIdType f) { return this->Directed(f); },
+          [&](vtkIdType f1, vtkIdType f2, bool same)
+          { return this->Smooth(f1, f2, consistent && same, offsets, conn, c); });
+      });
+    return true;
+  }
+
+  /// The regions of the points of the polygons `clashes` again, now that `reverse` (which
+  /// polygons were reversed) is known.
+  void Redo(Adjacency& adjacency, const std::vector<vtkIdType>& clashes,
+    const std::vector<unsigned char>& reverse)
+  {
+    if (clashes.empty() || this->Labels.Copies.empty())
+    {
+      return;
+    }
+    vtkCellArray* polys = this->Input->GetPolys();
+    const double c = this->Cosine();
+    polys->Visit(RawCells{},
+      [&](const auto* offsets, const auto* conn)
+      {
+        std::vector<vtkIdType> redo;
+        for (vtkIdType f : clashes)
         {
-          return status[static_cast<std::size_t>(firstPoly + f)] == phongvtk::StatusOk;
-        };
-        auto coordinates = [&](vtkIdType f, std::vector<double>& xyz)
-        {
-          const std::int64_t n = offsets[f + 1] - offsets[f];
-          xyz.resize(static_cast<std::size_t>(3 * n));
-          for (std::int64_t i = 0; i < 3 * n; ++i)
+          redo.insert(redo.end(), conn + offsets[f], conn + offsets[f + 1]);
+        }
+        std::sort(redo.begin(), redo.end());
+        redo.erase(std::unique(redo.begin(), redo.end()), redo.end());
+        phongvtk::RedoRegions(
+          redo, polys, adjacency.Links, this->Labels,
+          [&](vtkIdType f) { return this->Directed(f); },
+          [&](vtkIdType f1, vtkIdType f2, bool)
           {
-            xyz[static_cast<std::size_t>(i)] = static_cast<double>(
-              points[3 * static_cast<std::int64_t>(conn[offsets[f] + i / 3]) + i % 3]);
-          }
-          return n;
-        };
-        auto smooth = [&](vtkIdType f1, vtkIdType f2)
-        {
-          const double* n1 = normals.get() + 3 * (firstPoly + f1);
-          const double* n2 = normals.get() + 3 * (firstPoly + f2);
-          if (!exact)
-          {
-            return phongvtk::FeatureEdgeFromNormals(n1, n2, c) == phongvtk::FeatureEdge::Smooth;
-          }
-          const phongvtk::FeatureEdge edge = phongvtk::CertifiedFeatureEdge(n1, n2, c);
-          if (edge != phongvtk::FeatureEdge::Undecided)
-          {
-            return edge == phongvtk::FeatureEdge::Smooth;
-          }
-          std::vector<double> xyz1, xyz2;
-          const std::int64_t m1 = coordinates(f1, xyz1);
-          const std::int64_t m2 = coordinates(f2, xyz2);
-          return !phongvtk::detail::ExactFeatureEdgeIsSharp(xyz1.data(), m1, xyz2.data(), m2, c);
-        };
-        adjacency.Build(input);
-        split = phongvtk::SplitAtSharpEdges(input->GetPoints(), input->GetPolys(), adjacency.Links,
-          adjacency.Neighbours, directed, smooth);
+            const bool opposite =
+              reverse[static_cast<std::size_t>(f1)] != reverse[static_cast<std::size_t>(f2)];
+            return this->Smooth(f1, f2, opposite, offsets, conn, c);
+          });
       });
   }
-  self->UpdateProgress(SplitShare);
-  // The polygons' normals have served: their memory goes before the copies' is taken.
-  normals.reset();
-  status.reset();
-  return phongvtk::MeshWithCopies(input, split, self->GetComputeOriginalPointIds());
-}
+
+  /// The second stage: `oriented` (the input's polygons, reordered or not) with the copies.
+  vtkSmartPointer<vtkPolyData> Apply(vtkPolyData* oriented, Adjacency& adjacency)
+  {
+    // The polygons' normals have served: their memory goes before the copies' is taken.
+    this->Normals.reset();
+    this->Status.reset();
+    phongvtk::SplitPolygons split;
+    if (!this->Labels.Copies.empty()) // polygons to split
+    {
+      split = phongvtk::ApplyRegions(
+        oriented->GetNumberOfPoints(), oriented->GetPolys(), adjacency.Links, this->Labels);
+      this->Labels = phongvtk::RegionLabels();
+    }
+    return phongvtk::MeshWithCopies(oriented, split, this->Self->GetComputeOriginalPointIds());
+  }
+};
 
 /// The first cell (VTK's numbering) with a point id outside [0, number of points), or -1.
 vtkIdType FirstInvalidCell(vtkPolyData* input)
@@ -661,20 +774,23 @@ vtkIdType FirstInvalidCell(vtkPolyData* input)
 }
 
 /**
- * Consistency, AutoOrientNormals and FlipNormals: `input` with its polygons reordered
- * (PhongVTKOrientation.h, PhongVTKAutoOrient.h); `clashes` the polygons left disagreeing on a
+ * Consistency, AutoOrientNormals and FlipNormals: `input` (`points` its coordinates as the
+ * kernels read them) with its polygons reordered (PhongVTKOrientation.h, PhongVTKAutoOrient.h);
+ * `reverse` which polygons were reversed, `clashes` the polygons left disagreeing on a
  * non-orientable component, `nonOrientable` the number of such components. Every point id is
- * valid. With Consistency or AutoOrientNormals, `adjacency` is built and follows the reordering.
+ * valid.
  */
+template <class T>
 vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* input,
-  Adjacency& adjacency, std::vector<vtkIdType>& clashes, vtkIdType& nonOrientable)
+  const T* points, Adjacency& adjacency, std::vector<unsigned char>& reverse,
+  std::vector<vtkIdType>& clashes, vtkIdType& nonOrientable)
 {
   vtkCellArray* polys = input->GetPolys();
   const vtkIdType numPolys = polys->GetNumberOfCells();
   phongvtk::Orientation orientation;
   if (self->GetConsistency() || self->GetAutoOrientNormals())
   {
-    adjacency.Build(input);
+    adjacency.BuildNeighbours(input);
     polys->Visit(RawCells{},
       [&](const auto* offsets, const auto*)
       {
@@ -682,6 +798,7 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
           adjacency.WantNonManifold ? &adjacency.NonManifold : nullptr,
           self->GetAutoOrientNormals());
       });
+    adjacency.ReleaseNeighbours();
     clashes = orientation.Clashes;
     nonOrientable = orientation.NonOrientable;
   }
@@ -691,28 +808,16 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
   }
   if (self->GetAutoOrientNormals())
   {
-    vtkSmartPointer<vtkDataArray> data = phongvtk::KernelCoordinates(input->GetPoints());
     polys->Visit(RawCells{},
       [&](const auto* offsets, const auto* conn)
       {
-        auto orient = [&](const auto* points)
-        {
-          const phongvtk::AutoOrientReport report =
-            phongvtk::AutoOrient(points, numPolys, offsets, conn, orientation);
-          vtkDebugWithObjectMacro(
-            self, << "AutoOrientNormals: " << report.Components << " component(s) oriented ("
-                  << report.Closed << " closed, " << report.Cavities << " cavities, " << report.Ties
-                  << " with zero flux kept, " << report.ExactSums << " decided exactly), "
-                  << report.Skipped << " left as they were.");
-        };
-        if (data->GetDataType() == VTK_FLOAT)
-        {
-          orient(static_cast<const float*>(data->GetVoidPointer(0)));
-        }
-        else
-        {
-          orient(static_cast<const double*>(data->GetVoidPointer(0)));
-        }
+        const phongvtk::AutoOrientReport report =
+          phongvtk::AutoOrient(points, numPolys, offsets, conn, orientation);
+        vtkDebugWithObjectMacro(
+          self, << "AutoOrientNormals: " << report.Components << " component(s) oriented ("
+                << report.Closed << " closed, " << report.Cavities << " cavities, " << report.Ties
+                << " with zero flux kept, " << report.ExactSums << " decided exactly), "
+                << report.Skipped << " left as they were.");
       });
   }
   if (self->GetFlipNormals())
@@ -722,13 +827,49 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
       r ^= 1;
     }
   }
-  if (adjacency.Built)
-  {
-    phongvtk::ReverseEdgeSlots(adjacency.Neighbours, polys, orientation.Reverse);
-  }
   auto out = vtkSmartPointer<vtkPolyData>::New();
   out->ShallowCopy(input);
   out->SetPolys(phongvtk::ReversedPolygons(polys, orientation.Reverse));
+  reverse = std::move(orientation.Reverse);
+  return out;
+}
+
+/**
+ * Orientation (`orient`: Consistency, AutoOrientNormals, FlipNormals) and Splitting (`split`)
+ * of `input` (`points` its coordinates as the kernels read them), as the user sees them: the
+ * polygons reordered, then split at their sharp edges, decided before the reordering
+ * (SharpEdges). Null when a cell refers to a point that does not exist (firstBadCell names it).
+ */
+template <class T>
+vtkSmartPointer<vtkPolyData> OrientAndSplit(vtkPolygonNormals* self, vtkPolyData* input,
+  const T* points, bool orient, bool split, std::vector<vtkIdType>& clashes,
+  vtkIdType& nonOrientable, vtkIdType& firstBadCell)
+{
+  Adjacency adjacency;
+  adjacency.WantNeighbours = self->GetConsistency() || self->GetAutoOrientNormals();
+  adjacency.WantNonManifold = self->GetNonManifoldTraversal() && adjacency.WantNeighbours;
+  SharpEdges<T> sharp{ self, input, points };
+  if (split && !sharp.Decide(adjacency, adjacency.WantNeighbours, firstBadCell))
+  {
+    return nullptr;
+  }
+  if (self->GetAbortExecute())
+  {
+    return input;
+  }
+  vtkSmartPointer<vtkPolyData> oriented = input;
+  std::vector<unsigned char> reverse;
+  if (orient)
+  {
+    oriented = Reoriented(self, input, points, adjacency, reverse, clashes, nonOrientable);
+  }
+  if (!split)
+  {
+    return oriented;
+  }
+  sharp.Redo(adjacency, clashes, reverse);
+  vtkSmartPointer<vtkPolyData> out = sharp.Apply(oriented, adjacency);
+  self->UpdateProgress(SplitShare);
   return out;
 }
 
@@ -872,38 +1013,32 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
   bool ok = true;
   double progressStart = 0.0;
   vtkSmartPointer<vtkPolyData> source = input;
-  // Orientation first: everything else follows the reordered polygons.
+  // Orientation and splitting first: the normals follow the reordered and split polygons.
   std::vector<vtkIdType> clashes;
   vtkIdType nonOrientable = 0;
-  Adjacency adjacency; // built once for Consistency and Splitting
-  adjacency.WantNonManifold =
-    this->NonManifoldTraversal && (this->Consistency || this->AutoOrientNormals);
-  if ((this->Consistency || this->AutoOrientNormals || this->FlipNormals) &&
-    input->GetNumberOfPolys() > 0)
+  const bool orient = (this->Consistency || this->AutoOrientNormals || this->FlipNormals) &&
+    input->GetNumberOfPolys() > 0;
+  const bool split = this->Splitting && this->ComputePointNormals;
+  if (orient)
   {
     firstBadCell = FirstInvalidCell(input);
     ok = firstBadCell < 0;
-    if (ok)
-    {
-      source = Reoriented(this, input, adjacency, clashes, nonOrientable);
-      output->ShallowCopy(source);
-    }
   }
-  if (ok && this->Splitting && this->ComputePointNormals)
+  if (ok && (orient || split))
   {
-    vtkPolyData* oriented = source;
     vtkSmartPointer<vtkDataArray> data = phongvtk::KernelCoordinates(points);
     void* raw = data->GetVoidPointer(0);
     source = data->GetDataType() == VTK_FLOAT
-      ? SplitSharpEdges(this, oriented, static_cast<const float*>(raw), adjacency, firstBadCell)
-      : SplitSharpEdges(this, oriented, static_cast<const double*>(raw), adjacency, firstBadCell);
+      ? OrientAndSplit(this, input, static_cast<const float*>(raw), orient, split, clashes,
+          nonOrientable, firstBadCell)
+      : OrientAndSplit(this, input, static_cast<const double*>(raw), orient, split, clashes,
+          nonOrientable, firstBadCell);
     ok = source != nullptr;
     if (ok)
     {
       output->ShallowCopy(source);
       points = source->GetPoints();
-      progressStart = SplitShare;
-      adjacency.Release(); // the links and neighbours are not needed any more
+      progressStart = split ? SplitShare : 0.0;
     }
   }
 

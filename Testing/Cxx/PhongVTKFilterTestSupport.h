@@ -22,6 +22,7 @@
 
 #include <cmath>
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -134,6 +135,23 @@ inline vtkSmartPointer<vtkPolyData> SphereMesh(int resolution)
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->DeepCopy(source->GetOutput());
   mesh->GetPointData()->Initialize();
+  return mesh;
+}
+
+/// A sphere whose points are moved radially at random: many edges either side of 30 degrees.
+inline vtkSmartPointer<vtkPolyData> RoughSphere(
+  int resolution, double roughness, unsigned seed = 11)
+{
+  auto mesh = SphereMesh(resolution);
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(1.0 - roughness, 1.0 + roughness);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    mesh->GetPoint(i, x);
+    const double s = uniform(random);
+    mesh->GetPoints()->SetPoint(i, s * x[0], s * x[1], s * x[2]);
+  }
   return mesh;
 }
 

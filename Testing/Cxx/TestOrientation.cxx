@@ -11,6 +11,7 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -42,6 +43,7 @@ using phongvtk_test::MessageObserver;
 using phongvtk_test::Moebius;
 using phongvtk_test::Point;
 using phongvtk_test::PolygonsOf;
+using phongvtk_test::RoughSphere;
 using phongvtk_test::RunFilter;
 using phongvtk_test::SphereMesh;
 
@@ -239,6 +241,125 @@ TEST(Orientation, MoebiusStripIsReportedAndItsSeamFlagged)
     MakePolyData(phongvtk_test::PointsOf(strip), ring),
     [](vtkPolygonNormals* f) { f->ConsistencyOn(); }, quiet);
   EXPECT_TRUE(quiet->Warnings.empty());
+}
+
+/// A torus of n x n quads (not planar: each point moved radially at random).
+vtkSmartPointer<vtkPolyData> RoughQuadTorus(int n, double roughness)
+{
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> uniform(-roughness, roughness);
+  std::vector<Point> p;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      const double u = 2.0 * vtkMath::Pi() * i / n, v = 2.0 * vtkMath::Pi() * j / n;
+      const double r = 0.4 * (1.0 + uniform(random));
+      p.push_back({ (1.0 + r * std::cos(v)) * std::cos(u), (1.0 + r * std::cos(v)) * std::sin(u),
+        r * std::sin(v) });
+    }
+  }
+  Cells cells;
+  auto id = [n](int i, int j)
+  {
+    return vtkIdType((i % n) * n + j % n);
+  };
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      cells.Polys.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1) });
+    }
+  }
+  return MakePolyData(p, cells);
+}
+
+TEST(Orientation, SplittingAfterConsistencyIsTheSplittingOfTheOrderedPolygons)
+{
+  // The sharp edges are decided before the polygons are reordered (on the normals as given, one
+  // negated where the two will be turned against each other): the result must be that of
+  // splitting the mesh Consistency delivers. A reversed triangle's area vector is exactly the
+  // negated one, so triangles agree bit for bit in every mode; quads in EXACT, whose decision is
+  // exact either way.
+  struct Case
+  {
+    vtkSmartPointer<vtkPolyData> Mesh;
+    std::vector<int> Modes;
+  };
+  const Case cases[] = { { RoughSphere(40, 0.05),
+                           { vtkPolygonNormals::DOUBLE, vtkPolygonNormals::EXACT } },
+    { RoughQuadTorus(30, 0.3), { vtkPolygonNormals::EXACT } } };
+  for (const Case& c : cases)
+  {
+    for (unsigned seed : { 1u, 2u })
+    {
+      auto reversed = RandomlyReversed(c.Mesh, 0.4, seed);
+      for (int mode : c.Modes)
+      {
+        auto configure = [mode](vtkPolygonNormals* f)
+        {
+          f->SetAccuracy(mode);
+          f->ComputePointNormalsOn();
+          f->SplittingOn();
+        };
+        auto together = RunFilter(reversed,
+          [&](vtkPolygonNormals* f)
+          {
+            configure(f);
+            f->ConsistencyOn();
+          });
+        auto ordered = RunFilter(reversed,
+          [](vtkPolygonNormals* f)
+          {
+            f->ConsistencyOn();
+            f->ComputeCellNormalsOff();
+          });
+        auto apart = RunFilter(ordered, configure);
+        ASSERT_GT(apart->GetNumberOfPoints(), c.Mesh->GetNumberOfPoints() + 10)
+          << "the mesh must have sharp edges";
+        ASSERT_EQ(together->GetNumberOfPoints(), apart->GetNumberOfPoints()) << mode;
+        EXPECT_EQ(PolygonsOf(together), PolygonsOf(apart)) << mode;
+        vtkDataArray* a = together->GetPointData()->GetNormals();
+        vtkDataArray* b = apart->GetPointData()->GetNormals();
+        ASSERT_EQ(a->GetDataSize(), b->GetDataSize());
+        EXPECT_EQ(std::memcmp(a->GetVoidPointer(0), b->GetVoidPointer(0),
+                    static_cast<std::size_t>(a->GetDataSize() * a->GetDataTypeSize())),
+          0)
+          << mode;
+      }
+    }
+  }
+}
+
+TEST(Orientation, SplittingCutsAMoebiusStripAtTheSeamConsistencyLeaves)
+{
+  // Every edge of the strip is smooth as given, but after Consistency the two quads along the
+  // seam face opposite ways: the edge between them is sharp, and every point normal must lean
+  // towards each polygon it belongs to (averaging across the seam would cancel them).
+  auto out = RunFilter(Moebius(24),
+    [](vtkPolygonNormals* f)
+    {
+      f->ConsistencyOn();
+      f->SplittingOn();
+      f->ComputePointNormalsOn();
+      f->ComputeCellNormalsOn();
+    });
+  EXPECT_EQ(out->GetNumberOfPoints(), 48 + 2) << "the two points of the seam get a copy each";
+  vtkDataArray* pointNormals = out->GetPointData()->GetNormals();
+  vtkDataArray* cellNormals = out->GetCellData()->GetNormals();
+  const std::vector<Cell> polys = PolygonsOf(out);
+  for (std::size_t f = 0; f < polys.size(); ++f)
+  {
+    double n[3];
+    cellNormals->GetTuple(static_cast<vtkIdType>(f), n);
+    for (vtkIdType p : polys[f])
+    {
+      double m[3];
+      pointNormals->GetTuple(p, m);
+      EXPECT_GT(vtkMath::Dot(n, m), std::cos(vtkMath::RadiansFromDegrees(30.0)))
+        << "polygon " << f << " point " << p;
+    }
+  }
 }
 
 TEST(Orientation, NonManifoldEdgesImposeNothing)

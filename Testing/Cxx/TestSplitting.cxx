@@ -48,6 +48,7 @@ using phongvtk_test::MakePolyData;
 using phongvtk_test::MessageObserver;
 using phongvtk_test::Point;
 using phongvtk_test::PolygonsOf;
+using phongvtk_test::RoughSphere;
 
 constexpr int Modes[] = { vtkPolygonNormals::FAST, vtkPolygonNormals::DOUBLE,
   vtkPolygonNormals::COMPENSATED, vtkPolygonNormals::EXACT };
@@ -133,22 +134,6 @@ vtkSmartPointer<vtkPolyData> FlatGrid(int n)
     }
   }
   return MakePolyData(p, cells);
-}
-
-/// A sphere whose points are moved radially at random: many edges either side of 30 degrees.
-vtkSmartPointer<vtkPolyData> RoughSphere(int resolution, double roughness, unsigned seed = 11)
-{
-  auto mesh = phongvtk_test::SphereMesh(resolution);
-  std::mt19937_64 random(seed);
-  std::uniform_real_distribution<double> uniform(1.0 - roughness, 1.0 + roughness);
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double x[3];
-    mesh->GetPoint(i, x);
-    const double s = uniform(random);
-    mesh->GetPoints()->SetPoint(i, s * x[0], s * x[1], s * x[2]);
-  }
-  return mesh;
 }
 
 /**
