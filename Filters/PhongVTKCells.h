@@ -75,6 +75,16 @@ inline void PrefetchCells(const Offsets* offsets, const Connectivity* connectivi
 #endif
 }
 
+/// Asks the memory for the data at `address` (any address: nothing is read).
+inline void PrefetchAddress(const void* address)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(address);
+#else
+  (void)address;
+#endif
+}
+
 /// Pointers to the coordinates of the corners of triangles `cell` ... `cell + 3` (and the
 /// connectivity further on asked for: PrefetchCells).
 template <class T, class Offsets, class Connectivity>

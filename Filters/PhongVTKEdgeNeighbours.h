@@ -222,6 +222,9 @@ private:
   std::vector<vtkIdType> SortedFaces;
 };
 
+/// How many points ahead ForPointFans asks for the data of the polygons around a point.
+constexpr vtkIdType FanLookAhead = 8;
+
 /**
  * Writes what a group of edges p-q (PointFan) says about the edge slots: for a manifold edge,
  * each polygon's slot holds the other (`2 g + s`); for a non-manifold one, with `pairs`, every
@@ -263,9 +266,10 @@ inline void RecordEdgeGroup(const PointFan::Edge* group, std::size_t members,
  * -1), the neighbour across every edge slot is written first; with `nonManifold` as well, every
  * polygon around each non-manifold edge paired with the smallest one around it, sorted by slot.
  */
-template <class Local, class AtPoint>
+template <class Local, class AtPoint, class AheadFn>
 void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links, bool after,
-  vtkIdType* neighbours, std::vector<NonManifoldPair>* nonManifold, const AtPoint& atPoint)
+  vtkIdType* neighbours, std::vector<NonManifoldPair>* nonManifold, const AtPoint& atPoint,
+  const AheadFn& ahead)
 {
   struct Scratch
   {
@@ -284,6 +288,17 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
           PointFan& fan = local.Fan;
           for (vtkIdType p = begin; p < end; ++p)
           {
+            if (p + FanLookAhead < end)
+            {
+              // The fans come in point order but their polygons' ids and data lie apart:
+              // asked for a few points ahead, their loads overlap.
+              const vtkIdType* next = links.GetCells(p + FanLookAhead);
+              for (vtkIdType j = 0, n = links.GetNumberOfCells(p + FanLookAhead); j < n; ++j)
+              {
+                PrefetchAddress(conn + offsets[next[j]]);
+                ahead(next[j]);
+              }
+            }
             fan.Build(p, links.GetCells(p), links.GetNumberOfCells(p), offsets, conn, after);
             if (neighbours)
             {
@@ -325,8 +340,9 @@ inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* 
   struct Nothing
   {
   };
-  ForPointFans<Nothing>(numPoints, polys, links, true, neighbours.data(), nonManifold,
-    [](vtkIdType, const PointFan&, Nothing&) {});
+  ForPointFans<Nothing>(
+    numPoints, polys, links, true, neighbours.data(), nonManifold,
+    [](vtkIdType, const PointFan&, Nothing&) {}, [](vtkIdType) {});
   return neighbours;
 }
 

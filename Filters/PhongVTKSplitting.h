@@ -244,15 +244,16 @@ struct RegionLabels
  * give the neighbours across the edges on the way: with `neighbours` (and `nonManifold`), they
  * are written as EdgeNeighbours writes them.
  */
-template <class DirectedFn, class SmoothFn>
+template <class DirectedFn, class SmoothFn, class AheadFn>
 RegionLabels SharpEdgeRegions(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
   vtkIdType* neighbours, std::vector<NonManifoldPair>* nonManifold, const DirectedFn& directed,
-  const SmoothFn& smooth)
+  const SmoothFn& smooth, const AheadFn& ahead)
 {
   RegionLabels labels;
   labels.LinkLabel.resize(static_cast<std::size_t>(links.GetLinksSize()));
   labels.Copies.assign(static_cast<std::size_t>(numPoints) + 1, 0);
-  ForPointFans<PointRegions>(numPoints, polys, links, false, neighbours, nonManifold,
+  ForPointFans<PointRegions>(
+    numPoints, polys, links, false, neighbours, nonManifold,
     [&](vtkIdType p, const PointFan& fan, PointRegions& regions)
     {
       const vtkIdType count = links.GetNumberOfCells(p);
@@ -264,7 +265,8 @@ RegionLabels SharpEdgeRegions(vtkIdType numPoints, vtkCellArray* polys, PolygonL
       }
       regions.Compute(fan, directed, smooth);
       labels.Store(p, links.GetCells(p), count, first, fan, regions);
-    });
+    },
+    ahead);
   return labels;
 }
 

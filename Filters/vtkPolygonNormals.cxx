@@ -685,7 +685,12 @@ struct SharpEdges
           adjacency.WantNonManifold ? &adjacency.NonManifold : nullptr,
           [&](vtkIdType f) { return this->Directed(f); },
           [&](vtkIdType f1, vtkIdType f2, bool same)
-          { return this->Smooth(f1, f2, consistent && same, offsets, conn, c); });
+          { return this->Smooth(f1, f2, consistent && same, offsets, conn, c); },
+          [&](vtkIdType f)
+          {
+            phongvtk::PrefetchAddress(this->Normals.get() + 3 * (this->FirstPoly + f));
+            phongvtk::PrefetchAddress(this->Status.get() + this->FirstPoly + f);
+          });
       });
     return true;
   }
