@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <vector>
 
 namespace phongvtk
@@ -120,10 +121,11 @@ struct NonManifoldPair
 
 /**
  * The fan of polygons around one point p: its polygons (`Faces`, sorted, each once) and its
- * edges at p (`Edges`), each edge p-q of each polygon with q != p, sorted by q, then polygon,
- * then slot (a total order: the same for any order of the links), so that the edges to one q
- * form a group: a manifold edge when two distinct polygons, a non-manifold one when more (or one
- * polygon twice). Every polygon having the edge p-q has p, so the whole group is in p's fan.
+ * edges at p (`Edges`), each edge p-q of each polygon with q != p, grouped by q: a manifold edge
+ * when two distinct polygons, a non-manifold one when more (or one polygon twice). Every polygon
+ * having the edge p-q has p, so the whole group is in p's fan. The edges are listed in the order
+ * of the sorted polygons, so the groups and their members do not depend on the order of the
+ * links.
  */
 struct PointFan
 {
@@ -134,12 +136,24 @@ struct PointFan
     vtkIdType Q, Polygon, Slot;
     std::int32_t Face, Forward;
 
-    bool operator<(const Edge& b) const
+    /// Polygon, then slot.
+    bool Before(const Edge& b) const
     {
-      return this->Q < b.Q ||
-        (this->Q == b.Q &&
-          (this->Polygon < b.Polygon || (this->Polygon == b.Polygon && this->Slot < b.Slot)));
+      return this->Polygon < b.Polygon || (this->Polygon == b.Polygon && this->Slot < b.Slot);
     }
+  };
+
+  /// The edges of one group, in the order of Edges.
+  struct Group
+  {
+    const Edge* Edges;
+    const std::int32_t* Index;
+    std::size_t Size;
+
+    const Edge& operator[](std::size_t i) const { return this->Edges[this->Index[i]]; }
+
+    /// Whether the group is a manifold edge (two distinct polygons).
+    bool Manifold() const { return this->Size == 2 && (*this)[0].Polygon != (*this)[1].Polygon; }
   };
 
   const vtkIdType* Faces = nullptr;
@@ -156,6 +170,7 @@ struct PointFan
   {
     this->Faces = DistinctSorted(cells, count, this->SortedFaces, this->NumberOfFaces);
     this->Edges.clear();
+    const vtkIdType least = after ? p + 1 : 0;
     for (std::size_t i = 0; i < this->NumberOfFaces; ++i)
     {
       const vtkIdType f = this->Faces[i];
@@ -163,7 +178,6 @@ struct PointFan
       ForCornersAt(offsets, conn, f, p,
         [&](vtkIdType k, vtkIdType previous, vtkIdType next)
         {
-          const vtkIdType least = after ? p + 1 : 0;
           if (next != p && next >= least)
           {
             this->Edges.push_back({ next, f, k, static_cast<std::int32_t>(i), 1 });
@@ -175,66 +189,82 @@ struct PointFan
           }
         });
     }
-    const std::size_t n = this->Edges.size();
-    if (n > 32)
-    {
-      std::sort(this->Edges.begin(), this->Edges.end()); // a hub point
-      return;
-    }
-    // Few (the rule): an insertion sort, which beats std::sort on a dozen.
-    Edge* e = this->Edges.data();
-    for (std::size_t i = 1; i < n; ++i)
-    {
-      const Edge x = e[i];
-      std::size_t j = i;
-      for (; j > 0 && x < e[j - 1]; --j)
-      {
-        e[j] = e[j - 1];
-      }
-      e[j] = x;
-    }
+    this->GroupEdges();
   }
 
-  /// Calls fn(first, members) for every group of edges to one point q, in increasing q.
+  /// Calls fn(group) for every group of edges to one point q (a Group).
   template <class Fn>
   void ForGroups(Fn&& fn) const
   {
-    const std::size_t n = this->Edges.size();
-    for (std::size_t e = 0; e < n;)
+    std::size_t begin = 0;
+    for (const std::size_t end : this->GroupEnd)
     {
-      std::size_t last = e + 1;
-      while (last < n && this->Edges[last].Q == this->Edges[e].Q)
-      {
-        ++last;
-      }
-      fn(this->Edges.data() + e, last - e);
-      e = last;
+      fn(Group{ this->Edges.data(), this->Members.data() + begin, end - begin });
+      begin = end;
     }
-  }
-
-  /// Whether a group is a manifold edge (two distinct polygons).
-  static bool Manifold(const Edge* group, std::size_t members)
-  {
-    return members == 2 && group[0].Polygon != group[1].Polygon;
   }
 
 private:
   std::vector<vtkIdType> SortedFaces;
-};
+  std::vector<std::int32_t> Members; // the edges' indices, group after group
+  std::vector<std::size_t> GroupEnd;
 
-/// How many points ahead ForPointFans asks for the data of the polygons around a point.
-constexpr vtkIdType FanLookAhead = 8;
+  void GroupEdges()
+  {
+    const auto n = static_cast<std::int32_t>(this->Edges.size());
+    this->Members.resize(static_cast<std::size_t>(n));
+    this->GroupEnd.clear();
+    std::int32_t* members = this->Members.data();
+    const Edge* e = this->Edges.data();
+    if (n > 64)
+    {
+      // A hub point: sorted by q, each group is a run.
+      std::iota(members, members + n, 0);
+      std::sort(members, members + n,
+        [e](std::int32_t a, std::int32_t b)
+        { return e[a].Q < e[b].Q || (e[a].Q == e[b].Q && a < b); });
+      for (std::int32_t i = 1; i <= n; ++i)
+      {
+        if (i == n || e[members[i]].Q != e[members[i - 1]].Q)
+        {
+          this->GroupEnd.push_back(static_cast<std::size_t>(i));
+        }
+      }
+      return;
+    }
+    // Few (the rule: a dozen): each group found by a scan, which beats sorting them.
+    std::uint64_t taken = 0;
+    std::size_t size = 0;
+    for (std::int32_t i = 0; i < n; ++i)
+    {
+      if (taken >> i & 1)
+      {
+        continue;
+      }
+      members[size++] = i;
+      for (std::int32_t j = i + 1; j < n; ++j)
+      {
+        if (e[j].Q == e[i].Q)
+        {
+          members[size++] = j;
+          taken |= std::uint64_t(1) << j;
+        }
+      }
+      this->GroupEnd.push_back(size);
+    }
+  }
+};
 
 /**
  * Writes what a group of edges p-q (PointFan) says about the edge slots: for a manifold edge,
  * each polygon's slot holds the other (`2 g + s`); for a non-manifold one, with `pairs`, every
- * polygon around it paired with the smallest.
+ * polygon around it paired with the smallest polygon's first edge.
  */
 template <class Offsets>
-inline void RecordEdgeGroup(const PointFan::Edge* group, std::size_t members,
-  const Offsets* offsets, vtkIdType* neighbours, std::vector<NonManifoldPair>* pairs)
+inline void RecordEdgeGroup(const PointFan::Group& group, const Offsets* offsets,
+  vtkIdType* neighbours, std::vector<NonManifoldPair>* pairs)
 {
-  if (PointFan::Manifold(group, members))
+  if (group.Manifold())
   {
     const PointFan::Edge& a = group[0];
     const PointFan::Edge& b = group[1];
@@ -242,21 +272,27 @@ inline void RecordEdgeGroup(const PointFan::Edge* group, std::size_t members,
     neighbours[static_cast<vtkIdType>(offsets[a.Polygon]) + a.Slot] = 2 * b.Polygon + same;
     neighbours[static_cast<vtkIdType>(offsets[b.Polygon]) + b.Slot] = 2 * a.Polygon + same;
   }
-  else if (pairs && members >= 2)
+  else if (pairs && group.Size >= 2)
   {
-    // Sorted by polygon then slot: the smallest polygon's first edge comes first.
-    const PointFan::Edge& first = group[0];
-    for (std::size_t j = 1; j < members; ++j)
+    const PointFan::Edge* first = &group[0];
+    for (std::size_t j = 1; j < group.Size; ++j)
     {
-      if (group[j].Polygon != first.Polygon)
+      first = group[j].Before(*first) ? &group[j] : first;
+    }
+    for (std::size_t j = 0; j < group.Size; ++j)
+    {
+      if (group[j].Polygon != first->Polygon)
       {
         pairs->push_back(
-          { first.Polygon, static_cast<vtkIdType>(offsets[first.Polygon]) + first.Slot,
-            group[j].Polygon, group[j].Forward == first.Forward ? 1 : 0 });
+          { first->Polygon, static_cast<vtkIdType>(offsets[first->Polygon]) + first->Slot,
+            group[j].Polygon, group[j].Forward == first->Forward ? 1 : 0 });
       }
     }
   }
 }
+
+/// How many points ahead ForPointFans asks for the data of the polygons around a point.
+constexpr vtkIdType FanLookAhead = 8;
 
 /**
  * Calls atPoint(p, fan, local) for every point p of `polys` (valid point ids, `links` theirs)
@@ -303,12 +339,12 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
             if (neighbours)
             {
               fan.ForGroups(
-                [&](const PointFan::Edge* group, std::size_t members)
+                [&](const PointFan::Group& group)
                 {
-                  if (group->Q > p) // each edge from its smaller point
+                  if (group[0].Q > p) // each edge from its smaller point
                   {
                     RecordEdgeGroup(
-                      group, members, offsets, neighbours, nonManifold ? &local.Pairs : nullptr);
+                      group, offsets, neighbours, nonManifold ? &local.Pairs : nullptr);
                   }
                 });
             }

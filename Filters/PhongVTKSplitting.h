@@ -122,9 +122,9 @@ struct PointRegions
   {
     this->Start(fan.Faces, fan.NumberOfFaces);
     fan.ForGroups(
-      [&](const PointFan::Edge* group, std::size_t members)
+      [&](const PointFan::Group& group)
       {
-        if (!PointFan::Manifold(group, members))
+        if (!group.Manifold())
         {
           return;
         }

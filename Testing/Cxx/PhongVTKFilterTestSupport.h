@@ -9,6 +9,8 @@
 #include "PhongVTKExactReference.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkCommand.h"
 #include "vtkIdList.h"
 #include "vtkMath.h"
@@ -153,6 +155,27 @@ inline vtkSmartPointer<vtkPolyData> RoughSphere(
     mesh->GetPoints()->SetPoint(i, s * x[0], s * x[1], s * x[2]);
   }
   return mesh;
+}
+
+/// Calls fn(polygon, point, its cell normal, the point's normal) for every corner of `out`'s
+/// polygons (a filter output with cell and point normals).
+inline void ForEachCornerNormal(vtkPolyData* out,
+  const std::function<void(std::size_t, vtkIdType, const double*, const double*)>& fn)
+{
+  vtkDataArray* cellNormals = out->GetCellData()->GetNormals();
+  vtkDataArray* pointNormals = out->GetPointData()->GetNormals();
+  const std::vector<Cell> polys = PolygonsOf(out);
+  for (std::size_t f = 0; f < polys.size(); ++f)
+  {
+    double n[3];
+    cellNormals->GetTuple(static_cast<vtkIdType>(f), n);
+    for (vtkIdType p : polys[f])
+    {
+      double m[3];
+      pointNormals->GetTuple(p, m);
+      fn(f, p, n, m);
+    }
+  }
 }
 
 /// A Moebius strip of n quads.

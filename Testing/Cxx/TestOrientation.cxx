@@ -345,21 +345,12 @@ TEST(Orientation, SplittingCutsAMoebiusStripAtTheSeamConsistencyLeaves)
       f->ComputeCellNormalsOn();
     });
   EXPECT_EQ(out->GetNumberOfPoints(), 48 + 2) << "the two points of the seam get a copy each";
-  vtkDataArray* pointNormals = out->GetPointData()->GetNormals();
-  vtkDataArray* cellNormals = out->GetCellData()->GetNormals();
-  const std::vector<Cell> polys = PolygonsOf(out);
-  for (std::size_t f = 0; f < polys.size(); ++f)
-  {
-    double n[3];
-    cellNormals->GetTuple(static_cast<vtkIdType>(f), n);
-    for (vtkIdType p : polys[f])
+  phongvtk_test::ForEachCornerNormal(out,
+    [](std::size_t f, vtkIdType p, const double* n, const double* m)
     {
-      double m[3];
-      pointNormals->GetTuple(p, m);
       EXPECT_GT(vtkMath::Dot(n, m), std::cos(vtkMath::RadiansFromDegrees(30.0)))
         << "polygon " << f << " point " << p;
-    }
-  }
+    });
 }
 
 TEST(Orientation, NonManifoldEdgesImposeNothing)

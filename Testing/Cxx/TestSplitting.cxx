@@ -475,19 +475,9 @@ TEST(Splitting, CubeGetsThreeCopiesOfEveryCornerAndAxisAlignedNormals)
       }
       EXPECT_EQ(copies, std::vector<int>(8, 3));
       // Every face's corners now carry its own normal.
-      vtkDataArray* cellNormals = out->GetCellData()->GetNormals();
-      const std::vector<Cell> polys = PolygonsOf(out);
-      for (std::size_t f = 0; f < polys.size(); ++f)
-      {
-        double nf[3];
-        cellNormals->GetTuple(static_cast<vtkIdType>(f), nf);
-        for (vtkIdType id : polys[f])
-        {
-          double n[3];
-          normals->GetTuple(id, n);
-          EXPECT_TRUE(n[0] == nf[0] && n[1] == nf[1] && n[2] == nf[2]);
-        }
-      }
+      phongvtk_test::ForEachCornerNormal(out,
+        [](std::size_t, vtkIdType, const double* nf, const double* n)
+        { EXPECT_TRUE(n[0] == nf[0] && n[1] == nf[1] && n[2] == nf[2]); });
     }
   }
 }
