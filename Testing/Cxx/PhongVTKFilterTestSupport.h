@@ -10,8 +10,8 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkDataArray.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkIdList.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
