@@ -584,6 +584,7 @@ struct SharpEdges
   std::unique_ptr<double[]> Normals;
   std::unique_ptr<unsigned char[]> Status;
   vtkIdType FirstPoly = 0;
+  bool Exact = false; // the accuracy mode, read once: Smooth runs for every edge twice
   phongvtk::RegionLabels Labels;
 
   /// Whether polygon f has a direction (a non-zero, finite area vector).
@@ -602,7 +603,7 @@ struct SharpEdges
     const double* m2 = this->Normals.get() + 3 * (this->FirstPoly + f2);
     const double n2[3] = { opposite ? -m2[0] : m2[0], opposite ? -m2[1] : m2[1],
       opposite ? -m2[2] : m2[2] };
-    if (this->Self->GetAccuracy() != vtkPolygonNormals::EXACT)
+    if (!this->Exact)
     {
       return phongvtk::FeatureEdgeFromNormals(n1, n2, c) == phongvtk::FeatureEdge::Smooth;
     }
@@ -668,6 +669,7 @@ struct SharpEdges
       return false;
     }
     this->FirstPoly = this->Input->GetNumberOfVerts() + this->Input->GetNumberOfLines();
+    this->Exact = this->Self->GetAccuracy() == vtkPolygonNormals::EXACT;
     const vtkIdType numPolys = this->Input->GetNumberOfPolys();
     if (numPolys == 0 || this->Self->GetAbortExecute())
     {
