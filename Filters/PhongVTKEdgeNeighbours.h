@@ -291,6 +291,22 @@ inline void RecordEdgeGroup(const PointFan::Group& group, const Offsets* offsets
   }
 }
 
+/**
+ * What a pass over the fans (ForPointFans) writes about the edges. With `Neighbours` (as many as
+ * the connectivity, filled with -1), the neighbour across every edge slot; with `NonManifold` as
+ * well, every polygon around each non-manifold edge paired with the smallest one around it,
+ * sorted by slot. Always `Disagreeing`: the number of edges Consistency would act on, the
+ * manifold edges along which both polygons run the same way and, with `CountNonManifold`, the
+ * non-manifold edges. None: the polygons agree already, and Consistency has nothing to do.
+ */
+struct EdgeRecords
+{
+  vtkIdType* Neighbours = nullptr;
+  std::vector<NonManifoldPair>* NonManifold = nullptr;
+  bool CountNonManifold = false;
+  vtkIdType Disagreeing = 0;
+};
+
 /// How many points ahead ForPointFans asks for the data of the polygons around a point.
 constexpr vtkIdType FanLookAhead = 8;
 
@@ -298,22 +314,22 @@ constexpr vtkIdType FanLookAhead = 8;
  * Calls atPoint(p, fan, local) for every point p of `polys` (valid point ids, `links` theirs)
  * with its fan (PointFan; with `after`, only the edges to larger points) and the calling thread's
  * own `Local` (default-constructed, kept from point to point), from several threads, each point
- * on its own. With `neighbours` (as many as the connectivity, filled with
- * -1), the neighbour across every edge slot is written first; with `nonManifold` as well, every
- * polygon around each non-manifold edge paired with the smallest one around it, sorted by slot.
+ * on its own; first, each edge from its smaller point, what `records` asks for (EdgeRecords).
  */
 template <class Local, class AtPoint, class AheadFn>
 void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links, bool after,
-  vtkIdType* neighbours, std::vector<NonManifoldPair>* nonManifold, const AtPoint& atPoint,
-  const AheadFn& ahead)
+  EdgeRecords& records, const AtPoint& atPoint, const AheadFn& ahead)
 {
   struct Scratch
   {
     PointFan Fan;
     std::vector<NonManifoldPair> Pairs;
+    vtkIdType Disagreeing = 0;
     Local Own;
   };
   vtkSMPThreadLocal<Scratch> scratch;
+  vtkIdType* neighbours = records.Neighbours;
+  const bool pairs = neighbours && records.NonManifold;
   polys->Visit(RawCells{},
     [&](const auto* offsets, const auto* conn)
     {
@@ -336,30 +352,39 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
               }
             }
             fan.Build(p, links.GetCells(p), links.GetNumberOfCells(p), offsets, conn, after);
-            if (neighbours)
-            {
-              fan.ForGroups(
-                [&](const PointFan::Group& group)
+            fan.ForGroups(
+              [&](const PointFan::Group& group)
+              {
+                if (group[0].Q < p) // each edge from its smaller point
                 {
-                  if (group[0].Q > p) // each edge from its smaller point
-                  {
-                    RecordEdgeGroup(
-                      group, offsets, neighbours, nonManifold ? &local.Pairs : nullptr);
-                  }
-                });
-            }
+                  return;
+                }
+                local.Disagreeing += group.Manifold()
+                  ? (group[0].Forward == group[1].Forward ? 1 : 0)
+                  : (records.CountNonManifold && group.Size >= 2 ? 1 : 0);
+                if (neighbours)
+                {
+                  RecordEdgeGroup(group, offsets, neighbours, pairs ? &local.Pairs : nullptr);
+                }
+              });
             atPoint(p, fan, local.Own);
           }
         });
     });
-  if (nonManifold)
+  records.Disagreeing = 0;
+  for (Scratch& local : scratch)
   {
-    nonManifold->clear();
+    records.Disagreeing += local.Disagreeing;
+  }
+  if (pairs)
+  {
+    records.NonManifold->clear();
     for (Scratch& local : scratch)
     {
-      nonManifold->insert(nonManifold->end(), local.Pairs.begin(), local.Pairs.end());
+      records.NonManifold->insert(
+        records.NonManifold->end(), local.Pairs.begin(), local.Pairs.end());
     }
-    std::sort(nonManifold->begin(), nonManifold->end());
+    std::sort(records.NonManifold->begin(), records.NonManifold->end());
   }
 }
 
@@ -376,9 +401,12 @@ inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* 
   struct Nothing
   {
   };
+  EdgeRecords records;
+  records.Neighbours = neighbours.data();
+  records.NonManifold = nonManifold;
   ForPointFans<Nothing>(
-    numPoints, polys, links, true, neighbours.data(), nonManifold,
-    [](vtkIdType, const PointFan&, Nothing&) {}, [](vtkIdType) {});
+    numPoints, polys, links, true, records, [](vtkIdType, const PointFan&, Nothing&) {},
+    [](vtkIdType) {});
   return neighbours;
 }
 

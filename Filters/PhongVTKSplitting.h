@@ -241,19 +241,17 @@ struct RegionLabels
  * theirs), `directed(f)` and `smooth(f1, f2, same)` (both called from several threads, f the
  * index of a polygon in `polys`, `same` when both run along their edge the same way). The points
  * are taken in parallel, each on its own: the same result for any number of threads. The fans
- * give the neighbours across the edges on the way: with `neighbours` (and `nonManifold`), they
- * are written as EdgeNeighbours writes them.
+ * give what `records` asks for about the edges on the way (EdgeRecords).
  */
 template <class DirectedFn, class SmoothFn, class AheadFn>
 RegionLabels SharpEdgeRegions(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
-  vtkIdType* neighbours, std::vector<NonManifoldPair>* nonManifold, const DirectedFn& directed,
-  const SmoothFn& smooth, const AheadFn& ahead)
+  EdgeRecords& records, const DirectedFn& directed, const SmoothFn& smooth, const AheadFn& ahead)
 {
   RegionLabels labels;
   labels.LinkLabel.resize(static_cast<std::size_t>(links.GetLinksSize()));
   labels.Copies.assign(static_cast<std::size_t>(numPoints) + 1, 0);
   ForPointFans<PointRegions>(
-    numPoints, polys, links, false, neighbours, nonManifold,
+    numPoints, polys, links, false, records,
     [&](vtkIdType p, const PointFan& fan, PointRegions& regions)
     {
       const vtkIdType count = links.GetNumberOfCells(p);

@@ -511,10 +511,14 @@ struct Adjacency
   phongvtk::PolygonLinks Links;
   bool LinksBuilt = false;
   bool WantNeighbours = false;  // Consistency or AutoOrientNormals
+  bool WantComponents = false;  // AutoOrientNormals: the neighbours even where all agree
   bool WantNonManifold = false; // and NonManifoldTraversal: the pairs across non-manifold edges
   std::vector<vtkIdType> Neighbours;
   std::vector<phongvtk::NonManifoldPair> NonManifold;
   bool NeighboursBuilt = false;
+  /// Found by the splitting's pass over the fans, which then wrote no neighbours: every manifold
+  /// edge's polygons agree, and no non-manifold edge matters; Consistency has nothing to do.
+  bool Agreeing = false;
 
   void BuildLinks(vtkPolyData* mesh)
   {
@@ -525,17 +529,31 @@ struct Adjacency
     }
   }
 
-  /// The neighbours' memory, every slot -1, for a pass over the fans to fill.
-  vtkIdType* NeighboursToFill(vtkPolyData* mesh)
+  /**
+   * What a pass over the fans is to record (EdgeRecords). The neighbours' memory (every slot -1)
+   * only for AutoOrientNormals: Consistency first asks whether the polygons agree already (most
+   * meshes' do), which spares it; where they do not, BuildNeighbours walks the fans again.
+   */
+  phongvtk::EdgeRecords RecordsToFill(vtkPolyData* mesh)
   {
-    if (!this->WantNeighbours)
+    phongvtk::EdgeRecords records;
+    records.CountNonManifold = this->WantNonManifold;
+    if (this->WantComponents)
     {
-      return nullptr;
+      this->Neighbours.assign(
+        static_cast<std::size_t>(mesh->GetPolys()->GetConnectivityArray()->GetNumberOfValues()),
+        -1);
+      this->NeighboursBuilt = true;
+      records.Neighbours = this->Neighbours.data();
+      records.NonManifold = this->WantNonManifold ? &this->NonManifold : nullptr;
     }
-    this->Neighbours.assign(
-      static_cast<std::size_t>(mesh->GetPolys()->GetConnectivityArray()->GetNumberOfValues()), -1);
-    this->NeighboursBuilt = true;
-    return this->Neighbours.data();
+    return records;
+  }
+
+  /// Keeps what the pass over the fans found (RecordsToFill).
+  void Recorded(const phongvtk::EdgeRecords& records)
+  {
+    this->Agreeing = this->WantNeighbours && records.Disagreeing == 0;
   }
 
   void BuildNeighbours(vtkPolyData* mesh)
@@ -677,14 +695,13 @@ struct SharpEdges
     }
     const double c = this->Cosine();
     adjacency.BuildLinks(this->Input);
+    phongvtk::EdgeRecords records = adjacency.RecordsToFill(this->Input);
     vtkCellArray* polys = this->Input->GetPolys();
     polys->Visit(RawCells{},
       [&](const auto* offsets, const auto* conn)
       {
         this->Labels = phongvtk::SharpEdgeRegions(
-          this->Input->GetNumberOfPoints(), polys, adjacency.Links,
-          adjacency.NeighboursToFill(this->Input),
-          adjacency.WantNonManifold ? &adjacency.NonManifold : nullptr,
+          this->Input->GetNumberOfPoints(), polys, adjacency.Links, records,
           [&](vtkIdType f) { return this->Directed(f); },
           [&](vtkIdType f1, vtkIdType f2, bool same)
           { return this->Smooth(f1, f2, consistent && same, offsets, conn, c); },
@@ -694,6 +711,7 @@ struct SharpEdges
             phongvtk::PrefetchAddress(this->Status.get() + this->FirstPoly + f);
           });
       });
+    adjacency.Recorded(records);
     return true;
   }
 
@@ -795,7 +813,11 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
   vtkCellArray* polys = input->GetPolys();
   const vtkIdType numPolys = polys->GetNumberOfCells();
   phongvtk::Orientation orientation;
-  if (self->GetConsistency() || self->GetAutoOrientNormals())
+  if (adjacency.Agreeing && !self->GetAutoOrientNormals())
+  {
+    orientation.Reverse.assign(static_cast<std::size_t>(numPolys), 0); // Consistency: all agree
+  }
+  else if (self->GetConsistency() || self->GetAutoOrientNormals())
   {
     adjacency.BuildNeighbours(input);
     polys->Visit(RawCells{},
@@ -854,6 +876,7 @@ vtkSmartPointer<vtkPolyData> OrientAndSplit(vtkPolygonNormals* self, vtkPolyData
 {
   Adjacency adjacency;
   adjacency.WantNeighbours = self->GetConsistency() || self->GetAutoOrientNormals();
+  adjacency.WantComponents = self->GetAutoOrientNormals();
   adjacency.WantNonManifold = self->GetNonManifoldTraversal() && adjacency.WantNeighbours;
   SharpEdges<T> sharp{ self, input, points };
   if (split && !sharp.Decide(adjacency, adjacency.WantNeighbours, firstBadCell))

@@ -11,6 +11,7 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -367,28 +368,9 @@ TEST(Orientation, NonManifoldEdgesImposeNothing)
 TEST(Orientation, NonManifoldTraversalJoinsThePagesOfABook)
 {
   // Three pages on the spine 0-1, each two quads (a component of its own without the
-  // traversal), pages 1 and 2 given in the reverse order. With NonManifoldTraversal every page
-  // runs along the spine against page 0 (the smallest polygon around it), as in VTK's traversal
-  // from cell 0.
-  std::vector<Point> p = { { 0, 0, 0 }, { 0, 0, 1 } };
-  Cells cells;
-  for (int page = 0; page < 3; ++page)
-  {
-    const double t = 2.0 * M_PI * page / 3.0;
-    const double c = std::cos(t), s = std::sin(t);
-    const auto base = static_cast<vtkIdType>(p.size());
-    p.insert(p.end(), { { c, s, 0 }, { c, s, 1 }, { 2 * c, 2 * s, 0 }, { 2 * c, 2 * s, 1 } });
-    Cell inner = { 0, base, base + 1, 1 };
-    Cell outer = { base, base + 2, base + 3, base + 1 };
-    if (page > 0)
-    {
-      std::reverse(inner.begin(), inner.end());
-      std::reverse(outer.begin(), outer.end());
-    }
-    cells.Polys.push_back(inner);
-    cells.Polys.push_back(outer);
-  }
-  auto book = MakePolyData(p, cells);
+  // traversal), pages 1 and 2 given either against page 0 along the spine or the same way as it.
+  // With NonManifoldTraversal every page runs along the spine against page 0 (the smallest
+  // polygon around it), as in VTK's traversal from cell 0: in the second book pages 1 and 2 turn.
   // +1 when the polygon runs 0 -> 1 along the spine, -1 for 1 -> 0.
   auto spine = [](const Cell& cell)
   {
@@ -406,28 +388,74 @@ TEST(Orientation, NonManifoldTraversalJoinsThePagesOfABook)
     }
     return 0;
   };
-  auto alone = PolygonsOf(RunFilter(book, [](vtkPolygonNormals* f) { f->ConsistencyOn(); }));
-  EXPECT_EQ(alone, PolygonsOf(book)) << "each page keeps its first polygon's order";
-  auto joined = PolygonsOf(RunFilter(book,
-    [](vtkPolygonNormals* f)
-    {
-      f->ConsistencyOn();
-      f->NonManifoldTraversalOn();
-    }));
-  EXPECT_EQ(spine(joined[0]), -1);
-  EXPECT_EQ(spine(joined[2]), 1);
-  EXPECT_EQ(spine(joined[4]), 1);
-  EXPECT_EQ(DisagreeingEdges(MakePolyData(p, Cells{ {}, {}, joined, {} })), 0);
-  vtkNew<vtkPolyDataNormals> vtk;
-  vtk->SetInputData(book);
-  vtk->SplittingOff();
-  vtk->ConsistencyOn();
-  vtk->NonManifoldTraversalOn();
-  vtk->Update();
-  const std::vector<Cell> theirs = PolygonsOf(vtk->GetOutput());
-  for (std::size_t f = 0; f < theirs.size(); f += 2)
+  for (const bool pagesAgainst : { true, false })
   {
-    EXPECT_EQ(spine(theirs[f]), spine(joined[f])) << "page " << f / 2;
+    std::vector<Point> p = { { 0, 0, 0 }, { 0, 0, 1 } };
+    Cells cells;
+    for (int page = 0; page < 3; ++page)
+    {
+      const double t = 2.0 * M_PI * page / 3.0;
+      const double c = std::cos(t), s = std::sin(t);
+      const auto base = static_cast<vtkIdType>(p.size());
+      p.insert(p.end(), { { c, s, 0 }, { c, s, 1 }, { 2 * c, 2 * s, 0 }, { 2 * c, 2 * s, 1 } });
+      Cell inner = { 0, base, base + 1, 1 };
+      Cell outer = { base, base + 2, base + 3, base + 1 };
+      if (page > 0 && pagesAgainst)
+      {
+        std::reverse(inner.begin(), inner.end());
+        std::reverse(outer.begin(), outer.end());
+      }
+      cells.Polys.push_back(inner);
+      cells.Polys.push_back(outer);
+    }
+    auto book = MakePolyData(p, cells);
+    EXPECT_EQ(spine(cells.Polys[2]), pagesAgainst ? 1 : -1);
+    auto alone = PolygonsOf(RunFilter(book, [](vtkPolygonNormals* f) { f->ConsistencyOn(); }));
+    EXPECT_EQ(alone, PolygonsOf(book)) << "each page keeps its first polygon's order";
+    auto joined = PolygonsOf(RunFilter(book,
+      [](vtkPolygonNormals* f)
+      {
+        f->ConsistencyOn();
+        f->NonManifoldTraversalOn();
+      }));
+    EXPECT_EQ(spine(joined[0]), -1);
+    EXPECT_EQ(spine(joined[2]), 1) << pagesAgainst;
+    EXPECT_EQ(spine(joined[4]), 1) << pagesAgainst;
+    EXPECT_EQ(DisagreeingEdges(MakePolyData(p, Cells{ {}, {}, joined, {} })), 0);
+    // With Splitting too: its pass over the fans finds every manifold edge agreeing, yet the
+    // spine still decides the pages (the polygons read back through OriginalPointIds).
+    auto split = RunFilter(book,
+      [](vtkPolygonNormals* f)
+      {
+        f->ConsistencyOn();
+        f->NonManifoldTraversalOn();
+        f->SplittingOn();
+        f->ComputePointNormalsOn();
+      });
+    EXPECT_EQ(split->GetNumberOfPoints(), 14 + 4) << "each end of the spine on three pages";
+    auto* original =
+      vtkIdTypeArray::SafeDownCast(split->GetPointData()->GetArray("OriginalPointIds"));
+    ASSERT_NE(original, nullptr);
+    std::vector<Cell> splitBack = PolygonsOf(split);
+    for (Cell& cell : splitBack)
+    {
+      for (vtkIdType& id : cell)
+      {
+        id = original->GetValue(id);
+      }
+    }
+    EXPECT_EQ(splitBack, joined) << pagesAgainst;
+    vtkNew<vtkPolyDataNormals> vtk;
+    vtk->SetInputData(book);
+    vtk->SplittingOff();
+    vtk->ConsistencyOn();
+    vtk->NonManifoldTraversalOn();
+    vtk->Update();
+    const std::vector<Cell> theirs = PolygonsOf(vtk->GetOutput());
+    for (std::size_t f = 0; f < theirs.size(); f += 2)
+    {
+      EXPECT_EQ(spine(theirs[f]), spine(joined[f])) << "page " << f / 2 << " " << pagesAgainst;
+    }
   }
 }
 
