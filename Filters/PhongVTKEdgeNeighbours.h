@@ -25,6 +25,7 @@
 #include "vtkStaticCellLinksTemplate.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <numeric>
 #include <vector>
@@ -297,13 +298,16 @@ inline void RecordEdgeGroup(const PointFan::Group& group, const Offsets* offsets
  * well, every polygon around each non-manifold edge paired with the smallest one around it,
  * sorted by slot. Always `Disagreeing`: the number of edges Consistency would act on, the
  * manifold edges along which both polygons run the same way and, with `CountNonManifold`, the
- * non-manifold edges. None: the polygons agree already, and Consistency has nothing to do.
+ * non-manifold edges. None: the polygons agree already, and Consistency has nothing to do. With
+ * `StopAtDisagreeing`, the pass ends soon after the first such edge (Disagreeing then counts
+ * some of them, at least one).
  */
 struct EdgeRecords
 {
   vtkIdType* Neighbours = nullptr;
   std::vector<NonManifoldPair>* NonManifold = nullptr;
   bool CountNonManifold = false;
+  bool StopAtDisagreeing = false;
   vtkIdType Disagreeing = 0;
 };
 
@@ -330,6 +334,7 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
   vtkSMPThreadLocal<Scratch> scratch;
   vtkIdType* neighbours = records.Neighbours;
   const bool pairs = neighbours && records.NonManifold;
+  std::atomic<bool> stop(false);
   polys->Visit(RawCells{},
     [&](const auto* offsets, const auto* conn)
     {
@@ -340,6 +345,12 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
           PointFan& fan = local.Fan;
           for (vtkIdType p = begin; p < end; ++p)
           {
+            if (records.StopAtDisagreeing &&
+              (local.Disagreeing > 0 || stop.load(std::memory_order_relaxed)))
+            {
+              stop.store(true, std::memory_order_relaxed);
+              break;
+            }
             if (p + FanLookAhead < end)
             {
               // The fans come in point order but their polygons' ids and data lie apart:

@@ -556,6 +556,31 @@ struct Adjacency
     this->Agreeing = this->WantNeighbours && records.Disagreeing == 0;
   }
 
+  /**
+   * For Consistency alone (no splitting pass to tell): whether the polygons agree already, from
+   * a pass over the fans that stops at the first edge where they do not. A mesh whose polygons
+   * agree is spared the neighbours and the union-find; one that does not pays little for asking
+   * (ordered points, a disagreeing edge among the first ones) and at most one pass.
+   */
+  void CheckAgreement(vtkPolyData* mesh)
+  {
+    if (!this->WantNeighbours || this->WantComponents || this->NeighboursBuilt)
+    {
+      return;
+    }
+    this->BuildLinks(mesh);
+    phongvtk::EdgeRecords records;
+    records.CountNonManifold = this->WantNonManifold;
+    records.StopAtDisagreeing = true;
+    struct Nothing
+    {
+    };
+    phongvtk::ForPointFans<Nothing>(
+      mesh->GetNumberOfPoints(), mesh->GetPolys(), this->Links, true, records,
+      [](vtkIdType, const phongvtk::PointFan&, Nothing&) {}, [](vtkIdType) {});
+    this->Recorded(records);
+  }
+
   void BuildNeighbours(vtkPolyData* mesh)
   {
     if (!this->NeighboursBuilt)
@@ -891,6 +916,10 @@ vtkSmartPointer<vtkPolyData> OrientAndSplit(vtkPolygonNormals* self, vtkPolyData
   std::vector<unsigned char> reverse;
   if (orient)
   {
+    if (!split)
+    {
+      adjacency.CheckAgreement(input);
+    }
     oriented = Reoriented(self, input, points, adjacency, reverse, clashes, nonOrientable);
   }
   if (!split)

@@ -139,6 +139,44 @@ TEST(Orientation, RandomReversalsOfAClosedSurfaceAreUndone)
   }
 }
 
+TEST(Orientation, OneReversedPolygonAnywhereIsTurnedBack)
+{
+  // Consistency first asks whether the polygons agree already, stopping at the first edge where
+  // they do not: a single reversed polygon must be found wherever it lies (among the first
+  // points, the middle ones, the last; one thread or several), with Splitting or without.
+  auto sphere = SphereMesh(60);
+  const Cells given{ {}, {}, PolygonsOf(sphere), {} };
+  const vtkIdType numPolys = sphere->GetNumberOfPolys();
+  const std::string backend = vtkSMPTools::GetBackend();
+  for (const auto& config :
+    std::vector<std::pair<const char*, int>>{ { "Sequential", 1 }, { "STDThread", 3 } })
+  {
+    ASSERT_TRUE(vtkSMPTools::SetBackend(config.first));
+    vtkSMPTools::Initialize(config.second);
+    for (const vtkIdType f : { vtkIdType(1), numPolys / 2, numPolys - 1 })
+    {
+      Cells cells = given;
+      std::reverse(cells.Polys[static_cast<std::size_t>(f)].begin() + 1,
+        cells.Polys[static_cast<std::size_t>(f)].end());
+      auto turned = MakePolyData(phongvtk_test::PointsOf(sphere), cells);
+      ASSERT_EQ(DisagreeingEdges(turned), 3) << f;
+      for (const bool split : { false, true })
+      {
+        auto out = RunFilter(turned,
+          [split](vtkPolygonNormals* filter)
+          {
+            filter->ConsistencyOn();
+            filter->SetSplitting(split);
+            filter->ComputePointNormalsOn();
+          });
+        EXPECT_EQ(PolygonsOf(out), given.Polys)
+          << config.first << " " << config.second << " polygon " << f << " split " << split;
+      }
+    }
+  }
+  vtkSMPTools::SetBackend(backend.c_str());
+}
+
 TEST(Orientation, AgreesWithVTKsConsistencyOnRealMeshes)
 {
   if (!phongvtk_test::HaveCGALMeshes())
