@@ -400,6 +400,21 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
 }
 
 /**
+ * What `records` asks for about the edges of `polys` (valid point ids, `links` theirs), from a
+ * pass over the fans that does nothing else (each edge from its smaller point).
+ */
+inline void RecordEdges(
+  vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links, EdgeRecords& records)
+{
+  struct Nothing
+  {
+  };
+  ForPointFans<Nothing>(
+    numPoints, polys, links, true, records, [](vtkIdType, const PointFan&, Nothing&) {},
+    [](vtkIdType) {});
+}
+
+/**
  * The neighbour across every edge slot of `polys` (valid point ids, `links` theirs); with
  * `nonManifold`, also every polygon around each non-manifold edge paired with the smallest one
  * around it, sorted by slot.
@@ -409,15 +424,10 @@ inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* 
 {
   std::vector<vtkIdType> neighbours(
     static_cast<std::size_t>(polys->GetConnectivityArray()->GetNumberOfValues()), -1);
-  struct Nothing
-  {
-  };
   EdgeRecords records;
   records.Neighbours = neighbours.data();
   records.NonManifold = nonManifold;
-  ForPointFans<Nothing>(
-    numPoints, polys, links, true, records, [](vtkIdType, const PointFan&, Nothing&) {},
-    [](vtkIdType) {});
+  RecordEdges(numPoints, polys, links, records);
   return neighbours;
 }
 

@@ -516,8 +516,8 @@ struct Adjacency
   std::vector<vtkIdType> Neighbours;
   std::vector<phongvtk::NonManifoldPair> NonManifold;
   bool NeighboursBuilt = false;
-  /// Found by the splitting's pass over the fans, which then wrote no neighbours: every manifold
-  /// edge's polygons agree, and no non-manifold edge matters; Consistency has nothing to do.
+  /// Consistency without AutoOrientNormals, and a pass over the fans found every manifold edge's
+  /// polygons agreeing and no non-manifold edge that matters: there is nothing to do.
   bool Agreeing = false;
 
   void BuildLinks(vtkPolyData* mesh)
@@ -553,7 +553,7 @@ struct Adjacency
   /// Keeps what the pass over the fans found (RecordsToFill).
   void Recorded(const phongvtk::EdgeRecords& records)
   {
-    this->Agreeing = this->WantNeighbours && records.Disagreeing == 0;
+    this->Agreeing = this->WantNeighbours && !this->WantComponents && records.Disagreeing == 0;
   }
 
   /**
@@ -572,12 +572,7 @@ struct Adjacency
     phongvtk::EdgeRecords records;
     records.CountNonManifold = this->WantNonManifold;
     records.StopAtDisagreeing = true;
-    struct Nothing
-    {
-    };
-    phongvtk::ForPointFans<Nothing>(
-      mesh->GetNumberOfPoints(), mesh->GetPolys(), this->Links, true, records,
-      [](vtkIdType, const phongvtk::PointFan&, Nothing&) {}, [](vtkIdType) {});
+    phongvtk::RecordEdges(mesh->GetNumberOfPoints(), mesh->GetPolys(), this->Links, records);
     this->Recorded(records);
   }
 
@@ -838,7 +833,7 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
   vtkCellArray* polys = input->GetPolys();
   const vtkIdType numPolys = polys->GetNumberOfCells();
   phongvtk::Orientation orientation;
-  if (adjacency.Agreeing && !self->GetAutoOrientNormals())
+  if (adjacency.Agreeing)
   {
     orientation.Reverse.assign(static_cast<std::size_t>(numPolys), 0); // Consistency: all agree
   }
