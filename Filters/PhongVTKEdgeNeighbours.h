@@ -84,7 +84,9 @@ inline const vtkIdType* DistinctSorted(
 /**
  * Calls fn(k, previous, next) for every corner k of polygon f (of the cell array's `offsets` and
  * `conn`) at point p, with the point ids before and after it. No division: its latency showed in
- * the profile of the splitting.
+ * the profile of the splitting; and no branch on which corner is p (a mesh's polygons meet a
+ * point at any of their corners, which the branch predictor cannot guess): the corners at p
+ * are found as a mask, and a polygon has p once but for degenerate ones.
  */
 template <class Offsets, class Connectivity, class Fn>
 inline void ForCornersAt(
@@ -92,13 +94,39 @@ inline void ForCornersAt(
 {
   const Connectivity* ids = conn + offsets[f];
   const auto m = static_cast<vtkIdType>(offsets[f + 1] - offsets[f]);
-  for (vtkIdType k = 0; k < m; ++k)
+  auto corner = [&](vtkIdType k)
   {
-    if (static_cast<vtkIdType>(ids[k]) == p)
+    fn(k, static_cast<vtkIdType>(ids[k == 0 ? m - 1 : k - 1]),
+      static_cast<vtkIdType>(ids[k + 1 == m ? 0 : k + 1]));
+  };
+  if (m > 64)
+  {
+    for (vtkIdType k = 0; k < m; ++k)
     {
-      fn(k, static_cast<vtkIdType>(ids[k == 0 ? m - 1 : k - 1]),
-        static_cast<vtkIdType>(ids[k + 1 == m ? 0 : k + 1]));
+      if (static_cast<vtkIdType>(ids[k]) == p)
+      {
+        corner(k);
+      }
     }
+    return;
+  }
+  std::uint64_t at = 0;
+  if (m == 3)
+  {
+    at = std::uint64_t(static_cast<vtkIdType>(ids[0]) == p ? 1 : 0) |
+      std::uint64_t(static_cast<vtkIdType>(ids[1]) == p ? 2 : 0) |
+      std::uint64_t(static_cast<vtkIdType>(ids[2]) == p ? 4 : 0);
+  }
+  else
+  {
+    for (vtkIdType k = 0; k < m; ++k)
+    {
+      at |= std::uint64_t(static_cast<vtkIdType>(ids[k]) == p ? 1 : 0) << k;
+    }
+  }
+  for (; at != 0; at &= at - 1)
+  {
+    corner(static_cast<vtkIdType>(__builtin_ctzll(at)));
   }
 }
 
@@ -159,7 +187,8 @@ struct PointFan
 
   const vtkIdType* Faces = nullptr;
   std::size_t NumberOfFaces = 0;
-  std::vector<Edge> Edges;
+  std::vector<Edge> Edges; // the first NumberOfEdges are the fan's
+  std::size_t NumberOfEdges = 0;
 
   /**
    * The fan of p from its links `cells[0 .. count)` in `offsets` and `conn`; with `after`, only
@@ -170,7 +199,9 @@ struct PointFan
     const Connectivity* conn, bool after)
   {
     this->Faces = DistinctSorted(cells, count, this->SortedFaces, this->NumberOfFaces);
-    this->Edges.clear();
+    // Each edge written field by field into room kept from point to point: an Edge built aside
+    // and copied in cost a stalled store-to-load forwarding per edge (a tenth of the splitting).
+    this->NumberOfEdges = 0;
     const vtkIdType least = after ? p + 1 : 0;
     for (std::size_t i = 0; i < this->NumberOfFaces; ++i)
     {
@@ -179,14 +210,17 @@ struct PointFan
       ForCornersAt(offsets, conn, f, p,
         [&](vtkIdType k, vtkIdType previous, vtkIdType next)
         {
+          if (this->NumberOfEdges + 2 > this->Edges.size())
+          {
+            this->Edges.resize(2 * this->Edges.size() + 16);
+          }
           if (next != p && next >= least)
           {
-            this->Edges.push_back({ next, f, k, static_cast<std::int32_t>(i), 1 });
+            this->Add(next, f, k, i, 1);
           }
           if (previous != p && previous >= least)
           {
-            this->Edges.push_back(
-              { previous, f, k == 0 ? m - 1 : k - 1, static_cast<std::int32_t>(i), 0 });
+            this->Add(previous, f, k == 0 ? m - 1 : k - 1, i, 0);
           }
         });
     }
@@ -207,12 +241,24 @@ struct PointFan
 
 private:
   std::vector<vtkIdType> SortedFaces;
+
+  /// Appends an edge (there is room).
+  void Add(vtkIdType q, vtkIdType f, vtkIdType slot, std::size_t face, std::int32_t forward)
+  {
+    Edge& e = this->Edges[this->NumberOfEdges++];
+    e.Q = q;
+    e.Polygon = f;
+    e.Slot = slot;
+    e.Face = static_cast<std::int32_t>(face);
+    e.Forward = forward;
+  }
+
   std::vector<std::int32_t> Members; // the edges' indices, group after group
   std::vector<std::size_t> GroupEnd;
 
   void GroupEdges()
   {
-    const auto n = static_cast<std::int32_t>(this->Edges.size());
+    const auto n = static_cast<std::int32_t>(this->NumberOfEdges);
     this->Members.resize(static_cast<std::size_t>(n));
     this->GroupEnd.clear();
     std::int32_t* members = this->Members.data();
@@ -233,7 +279,13 @@ private:
       }
       return;
     }
-    // Few (the rule: a dozen): each group found by a scan, which beats sorting them.
+    // Few (the rule: a dozen): each group found by a scan, which beats sorting them; the scan of
+    // the qs side by side makes a mask of the matches, without a branch.
+    vtkIdType q[64];
+    for (std::int32_t i = 0; i < n; ++i)
+    {
+      q[i] = e[i].Q;
+    }
     std::uint64_t taken = 0;
     std::size_t size = 0;
     for (std::int32_t i = 0; i < n; ++i)
@@ -242,14 +294,16 @@ private:
       {
         continue;
       }
-      members[size++] = i;
+      std::uint64_t same = 0;
       for (std::int32_t j = i + 1; j < n; ++j)
       {
-        if (e[j].Q == e[i].Q)
-        {
-          members[size++] = j;
-          taken |= std::uint64_t(1) << j;
-        }
+        same |= std::uint64_t(q[j] == q[i] ? 1 : 0) << j;
+      }
+      taken |= same;
+      members[size++] = i;
+      for (; same != 0; same &= same - 1)
+      {
+        members[size++] = static_cast<std::int32_t>(__builtin_ctzll(same));
       }
       this->GroupEnd.push_back(size);
     }
@@ -351,10 +405,19 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
               stop.store(true, std::memory_order_relaxed);
               break;
             }
+            // The fans come in point order but their polygons' ids and data lie apart: asked
+            // for a few points ahead, their loads overlap. Where a polygon's ids are depends on
+            // its offset, itself apart: the offsets are asked for twice as far ahead.
+            if (p + 2 * FanLookAhead < end)
+            {
+              const vtkIdType* later = links.GetCells(p + 2 * FanLookAhead);
+              for (vtkIdType j = 0, n = links.GetNumberOfCells(p + 2 * FanLookAhead); j < n; ++j)
+              {
+                PrefetchAddress(offsets + later[j]);
+              }
+            }
             if (p + FanLookAhead < end)
             {
-              // The fans come in point order but their polygons' ids and data lie apart:
-              // asked for a few points ahead, their loads overlap.
               const vtkIdType* next = links.GetCells(p + FanLookAhead);
               for (vtkIdType j = 0, n = links.GetNumberOfCells(p + FanLookAhead); j < n; ++j)
               {
@@ -366,14 +429,12 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
             fan.ForGroups(
               [&](const PointFan::Group& group)
               {
-                if (group[0].Q < p) // each edge from its smaller point
-                {
-                  return;
-                }
-                local.Disagreeing += group.Manifold()
-                  ? (group[0].Forward == group[1].Forward ? 1 : 0)
-                  : (records.CountNonManifold && group.Size >= 2 ? 1 : 0);
-                if (neighbours)
+                // Each edge from its smaller point; counted without a branch on that.
+                const bool mine = group[0].Q > p;
+                local.Disagreeing += mine &
+                  (group.Manifold() ? group[0].Forward == group[1].Forward
+                                    : records.CountNonManifold && group.Size >= 2);
+                if (neighbours && mine)
                 {
                   RecordEdgeGroup(group, offsets, neighbours, pairs ? &local.Pairs : nullptr);
                 }

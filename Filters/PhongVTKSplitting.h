@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -169,13 +170,17 @@ private:
     this->NumberOfFaces = n;
     this->Parent.resize(n);
     std::iota(this->Parent.begin(), this->Parent.end(), 0);
+    this->Unions = 0;
   }
+
+  std::int32_t Unions = 0; // joins of two regions into one
 
   void Join(std::int32_t a, std::int32_t b)
   {
     const std::int32_t ra = this->Root(a);
     const std::int32_t rb = this->Root(b);
     this->Parent[std::max(ra, rb)] = std::min(ra, rb);
+    this->Unions += ra != rb ? 1 : 0;
   }
 
   /// The labels from the joins: faces are sorted, so regions are met in the order of their
@@ -185,6 +190,13 @@ private:
   {
     const auto n = static_cast<std::int32_t>(this->NumberOfFaces);
     this->Label.resize(this->NumberOfFaces);
+    if (n > 1 && this->Unions == n - 1)
+    {
+      // All joined (then all have a direction): one region, the common case, in one sweep.
+      std::fill(this->Label.begin(), this->Label.end(), 0);
+      this->Regions = 1;
+      return;
+    }
     this->Regions = 0;
     for (std::int32_t i = 0; i < n; ++i)
     {
@@ -210,12 +222,14 @@ private:
 };
 
 /**
- * The regions of every point: the label of every link (point, polygon) and the number of copies
- * of every point (`Copies[p + 1]`, then summed into the first copy's number).
+ * The regions of every point: the number of copies of every point (`Copies[p + 1]`, then summed
+ * into the first copy's number) and the label of every link (point, polygon) of the points with
+ * copies; the other points' labels are never written (most points of most meshes have one
+ * region: their memory is never touched).
  */
 struct RegionLabels
 {
-  std::vector<std::int32_t> LinkLabel;
+  std::unique_ptr<std::int32_t[]> LinkLabel;
   std::vector<vtkIdType> Copies;
 
   /// Keeps what `regions` (of point p, whose links are `cells[0 .. count)` from `first`) says.
@@ -223,7 +237,11 @@ struct RegionLabels
     const PointFan& fan, const PointRegions& regions)
   {
     this->Copies[static_cast<std::size_t>(p) + 1] = std::max<vtkIdType>(regions.Regions - 1, 0);
-    std::int32_t* label = this->LinkLabel.data() + first;
+    if (regions.Regions <= 1)
+    {
+      return;
+    }
+    std::int32_t* label = this->LinkLabel.get() + first;
     if (fan.Faces == cells) // the links were sorted and distinct: the labels are theirs
     {
       std::copy_n(regions.Label.data(), count, label);
@@ -248,7 +266,8 @@ RegionLabels SharpEdgeRegions(vtkIdType numPoints, vtkCellArray* polys, PolygonL
   EdgeRecords& records, const DirectedFn& directed, const SmoothFn& smooth, const AheadFn& ahead)
 {
   RegionLabels labels;
-  labels.LinkLabel.resize(static_cast<std::size_t>(links.GetLinksSize()));
+  // Not zero-filled: written only for the points with copies, read only for them.
+  labels.LinkLabel.reset(new std::int32_t[static_cast<std::size_t>(links.GetLinksSize())]);
   labels.Copies.assign(static_cast<std::size_t>(numPoints) + 1, 0);
   ForPointFans<PointRegions>(
     numPoints, polys, links, false, records,
@@ -258,8 +277,7 @@ RegionLabels SharpEdgeRegions(vtkIdType numPoints, vtkCellArray* polys, PolygonL
       const auto first = static_cast<std::size_t>(links.GetOffset(p));
       if (count < 2)
       {
-        std::fill_n(labels.LinkLabel.begin() + static_cast<std::ptrdiff_t>(first), count, 0);
-        return;
+        return; // one region, no copy (Copies[p + 1] is 0)
       }
       regions.Compute(fan, directed, smooth);
       labels.Store(p, links.GetCells(p), count, first, fan, regions);

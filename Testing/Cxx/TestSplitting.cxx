@@ -35,9 +35,11 @@
 #include <cstring>
 #include <functional>
 #include <map>
+#include <numeric>
 #include <random>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace
@@ -311,6 +313,121 @@ TEST(SplittingRegions, RegionsAreNumberedByTheirSmallestPolygon)
     EXPECT_EQ(regions.LabelOf(8), 0);
     EXPECT_EQ(regions.LabelOf(7), 1);
     EXPECT_EQ(regions.LabelOf(9), 1);
+  }
+}
+
+TEST(SplittingRegions, CornersAtAPointAreFoundWhereverAndHoweverOftenItIs)
+{
+  // Polygons of 3 to 70 corners (past the 64 of the corner mask) with point 0 at one, two or
+  // three corners at every place: ForCornersAt against a plain scan of the ids.
+  struct Corner
+  {
+    vtkIdType K, Previous, Next;
+    bool operator==(const Corner& b) const
+    {
+      return this->K == b.K && this->Previous == b.Previous && this->Next == b.Next;
+    }
+  };
+  std::mt19937 random(7);
+  int polygons = 0;
+  for (const vtkIdType m : { 3, 4, 5, 8, 63, 64, 65, 70 })
+  {
+    for (int trial = 0; trial < 40; ++trial)
+    {
+      std::vector<vtkIdType> ids(static_cast<std::size_t>(m));
+      std::iota(ids.begin(), ids.end(), vtkIdType(1));
+      const int times = 1 + trial % 3;
+      for (int t = 0; t < times; ++t)
+      {
+        ids[random() % static_cast<std::size_t>(m)] = 0;
+      }
+      const std::vector<vtkIdType> offsets = { 0, m };
+      std::vector<Corner> found, expected;
+      phongvtk::ForCornersAt(offsets.data(), ids.data(), 0, 0,
+        [&](vtkIdType k, vtkIdType previous, vtkIdType next) {
+          found.push_back({ k, previous, next });
+        });
+      for (vtkIdType k = 0; k < m; ++k)
+      {
+        if (ids[static_cast<std::size_t>(k)] == 0)
+        {
+          expected.push_back({ k, ids[static_cast<std::size_t>((k + m - 1) % m)],
+            ids[static_cast<std::size_t>((k + 1) % m)] });
+        }
+      }
+      EXPECT_TRUE(found == expected) << m << " corners, trial " << trial;
+      ++polygons;
+    }
+  }
+  EXPECT_EQ(polygons, 320);
+}
+
+TEST(SplittingRegions, AFanGroupsItsEdgesByTheirOtherPoint)
+{
+  // Point 0's fan: triangles around it, a quad, and a degenerate polygon that has point 0 twice
+  // (each of its corners at 0 brings its two edges); some fans with a hub's many edges (past
+  // the 64 of the scan, grouped by a sort). Every group holds exactly the edges (polygon, slot,
+  // direction) to one point q, as a plain listing of every polygon's edges at 0 says.
+  std::mt19937 random(11);
+  for (const int n : { 3, 6, 12, 40, 90 })
+  {
+    std::vector<std::vector<vtkIdType>> polys;
+    for (int f = 0; f < n; ++f)
+    {
+      polys.push_back({ 0, vtkIdType(1 + f), vtkIdType(1 + (f + 1) % n) });
+    }
+    polys.push_back({ 0, 2, 9, 3 });    // a quad (its edges join the groups of 2 and 3)
+    polys.push_back({ 0, 5, 0, 6, 7 }); // point 0 twice
+    std::shuffle(polys.begin(), polys.end(), random);
+    std::vector<vtkIdType> offsets = { 0 }, conn;
+    for (const auto& polygon : polys)
+    {
+      conn.insert(conn.end(), polygon.begin(), polygon.end());
+      offsets.push_back(static_cast<vtkIdType>(conn.size()));
+    }
+    // The links of point 0: every polygon once per corner at 0, in increasing order.
+    std::vector<vtkIdType> cells;
+    std::map<vtkIdType, std::multiset<std::tuple<vtkIdType, vtkIdType, int>>> expected;
+    for (vtkIdType f = 0; f < static_cast<vtkIdType>(polys.size()); ++f)
+    {
+      const auto m = static_cast<vtkIdType>(polys[static_cast<std::size_t>(f)].size());
+      for (vtkIdType k = 0; k < m; ++k)
+      {
+        const auto& polygon = polys[static_cast<std::size_t>(f)];
+        if (polygon[static_cast<std::size_t>(k)] != 0)
+        {
+          continue;
+        }
+        cells.push_back(f);
+        const vtkIdType next = polygon[static_cast<std::size_t>((k + 1) % m)];
+        const vtkIdType previous = polygon[static_cast<std::size_t>((k + m - 1) % m)];
+        if (next != 0)
+        {
+          expected[next].insert({ f, k, 1 });
+        }
+        if (previous != 0)
+        {
+          expected[previous].insert({ f, (k + m - 1) % m, 0 });
+        }
+      }
+    }
+    phongvtk::PointFan fan;
+    fan.Build(
+      0, cells.data(), static_cast<vtkIdType>(cells.size()), offsets.data(), conn.data(), false);
+    std::map<vtkIdType, std::multiset<std::tuple<vtkIdType, vtkIdType, int>>> found;
+    fan.ForGroups(
+      [&](const phongvtk::PointFan::Group& group)
+      {
+        const vtkIdType q = group[0].Q;
+        EXPECT_EQ(found.count(q), 0u) << "two groups of q = " << q;
+        for (std::size_t j = 0; j < group.Size; ++j)
+        {
+          EXPECT_EQ(group[j].Q, q);
+          EXPECT_EQ(fan.Faces[group[j].Face], group[j].Polygon);
+          found[q].insert({ group[j].Polygon, group[j].Slot, group[j].Forward });
+        }
+      });
+    EXPECT_TRUE(found == expected) << n << " triangles";
   }
 }
 
