@@ -728,6 +728,7 @@ struct SharpEdges
           [&](vtkIdType f)
           {
             phongvtk::PrefetchAddress(this->Normals.get() + 3 * (this->FirstPoly + f));
+            phongvtk::PrefetchAddress(this->Normals.get() + 3 * (this->FirstPoly + f) + 2);
             phongvtk::PrefetchAddress(this->Status.get() + this->FirstPoly + f);
           });
       });
