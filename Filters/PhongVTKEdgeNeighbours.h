@@ -28,18 +28,41 @@
 #include <atomic>
 #include <cstdint>
 #include <numeric>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace phongvtk
 {
-/// The polygons around every point (polygon indices of `polys`; every point id valid).
-using PolygonLinks = vtkStaticCellLinksTemplate<vtkIdType>;
+/**
+ * The polygons around every point (polygon indices of `polys`; every point id valid), as ids of
+ * type Id: `CompactPolygonLinks` (32 bits, VTK's STATIC_CELL_LINKS_UINT: half the memory and
+ * half the time to build) when the mesh fits them (FitsCompactLinks), `PolygonLinks` otherwise.
+ */
+template <class Id>
+using PolygonLinksOf = vtkStaticCellLinksTemplate<Id>;
+using PolygonLinks = PolygonLinksOf<vtkIdType>;
+using CompactPolygonLinks = PolygonLinksOf<unsigned int>;
+
+/// The id type of links (PolygonLinksOf).
+template <class Links>
+using LinkId =
+  std::remove_const_t<std::remove_pointer_t<decltype(std::declval<Links&>().GetCells(0))>>;
+
+/// Whether the links of `polys` over `numPoints` points fit CompactPolygonLinks: every polygon,
+/// corner and point id below 2^31.
+inline bool FitsCompactLinks(vtkIdType numPoints, vtkCellArray* polys)
+{
+  return numPoints < VTK_INT_MAX && polys->GetNumberOfCells() < VTK_INT_MAX &&
+    polys->GetConnectivityArray()->GetNumberOfValues() < VTK_INT_MAX;
+}
 
 /**
  * The links of `polys`. On one thread VTK's serial build (no atomics; each point's polygons come
  * in increasing order, which the passes over them use); its threaded build otherwise.
  */
-inline void BuildPolygonLinks(vtkPoints* points, vtkCellArray* polys, PolygonLinks& links)
+template <class Id>
+void BuildPolygonLinks(vtkPoints* points, vtkCellArray* polys, PolygonLinksOf<Id>& links)
 {
   vtkNew<vtkPolyData> surface;
   surface->SetPoints(points);
@@ -53,8 +76,8 @@ inline void BuildPolygonLinks(vtkPoints* points, vtkCellArray* polys, PolygonLin
  * the links themselves when they already are (a serial build), reversed when strictly
  * decreasing, else sorted into `scratch`. Returns the first and sets `n`.
  */
-inline const vtkIdType* DistinctSorted(
-  const vtkIdType* cells, vtkIdType count, std::vector<vtkIdType>& scratch, std::size_t& n)
+template <class Id>
+const Id* DistinctSorted(const Id* cells, vtkIdType count, std::vector<Id>& scratch, std::size_t& n)
 {
   bool increasing = true, decreasing = true;
   for (vtkIdType j = 1; j < count; ++j)
@@ -148,44 +171,48 @@ struct NonManifoldPair
   }
 };
 
+/// An edge p-q of a fan (PointFanOf): of polygon `Polygon` (index `Face` in Faces) in its edge slot
+/// `Slot` (corner index), `Forward` 1 when it runs p -> q.
+struct FanEdge
+{
+  vtkIdType Q, Polygon, Slot;
+  std::int32_t Face, Forward;
+
+  /// Polygon, then slot.
+  bool Before(const FanEdge& b) const
+  {
+    return this->Polygon < b.Polygon || (this->Polygon == b.Polygon && this->Slot < b.Slot);
+  }
+};
+
+/// The edges of one group of a fan, in the order of its Edges.
+struct FanGroup
+{
+  const FanEdge* Edges;
+  const std::int32_t* Index;
+  std::size_t Size;
+
+  const FanEdge& operator[](std::size_t i) const { return this->Edges[this->Index[i]]; }
+
+  /// Whether the group is a manifold edge (two distinct polygons).
+  bool Manifold() const { return this->Size == 2 && (*this)[0].Polygon != (*this)[1].Polygon; }
+};
+
 /**
  * The fan of polygons around one point p: its polygons (`Faces`, sorted, each once) and its
  * edges at p (`Edges`), each edge p-q of each polygon with q != p, grouped by q: a manifold edge
  * when two distinct polygons, a non-manifold one when more (or one polygon twice). Every polygon
  * having the edge p-q has p, so the whole group is in p's fan. The edges are listed in the order
  * of the sorted polygons, so the groups and their members do not depend on the order of the
- * links.
+ * links. Its polygons are ids of type Id, the links'.
  */
-struct PointFan
+template <class Id>
+struct PointFanOf
 {
-  /// An edge p-q of polygon `Polygon` (index `Face` in Faces) in its edge slot `Slot` (corner
-  /// index), `Forward` 1 when it runs p -> q.
-  struct Edge
-  {
-    vtkIdType Q, Polygon, Slot;
-    std::int32_t Face, Forward;
+  using Edge = FanEdge;
+  using Group = FanGroup;
 
-    /// Polygon, then slot.
-    bool Before(const Edge& b) const
-    {
-      return this->Polygon < b.Polygon || (this->Polygon == b.Polygon && this->Slot < b.Slot);
-    }
-  };
-
-  /// The edges of one group, in the order of Edges.
-  struct Group
-  {
-    const Edge* Edges;
-    const std::int32_t* Index;
-    std::size_t Size;
-
-    const Edge& operator[](std::size_t i) const { return this->Edges[this->Index[i]]; }
-
-    /// Whether the group is a manifold edge (two distinct polygons).
-    bool Manifold() const { return this->Size == 2 && (*this)[0].Polygon != (*this)[1].Polygon; }
-  };
-
-  const vtkIdType* Faces = nullptr;
+  const Id* Faces = nullptr;
   std::size_t NumberOfFaces = 0;
   std::vector<Edge> Edges; // the first NumberOfEdges are the fan's
   std::size_t NumberOfEdges = 0;
@@ -195,7 +222,7 @@ struct PointFan
    * the edges to points q > p (each edge is then found from one side only).
    */
   template <class Offsets, class Connectivity>
-  void Build(vtkIdType p, const vtkIdType* cells, vtkIdType count, const Offsets* offsets,
+  void Build(vtkIdType p, const Id* cells, vtkIdType count, const Offsets* offsets,
     const Connectivity* conn, bool after)
   {
     this->Faces = DistinctSorted(cells, count, this->SortedFaces, this->NumberOfFaces);
@@ -240,7 +267,7 @@ struct PointFan
   }
 
 private:
-  std::vector<vtkIdType> SortedFaces;
+  std::vector<Id> SortedFaces;
 
   /// Appends an edge (there is room).
   void Add(vtkIdType q, vtkIdType f, vtkIdType slot, std::size_t face, std::int32_t forward)
@@ -310,26 +337,29 @@ private:
   }
 };
 
+/// The fan of links of vtkIdType.
+using PointFan = PointFanOf<vtkIdType>;
+
 /**
  * Writes what a group of edges p-q (PointFan) says about the edge slots: for a manifold edge,
  * each polygon's slot holds the other (`2 g + s`); for a non-manifold one, with `pairs`, every
  * polygon around it paired with the smallest polygon's first edge.
  */
 template <class Offsets>
-inline void RecordEdgeGroup(const PointFan::Group& group, const Offsets* offsets,
-  vtkIdType* neighbours, std::vector<NonManifoldPair>* pairs)
+inline void RecordEdgeGroup(const FanGroup& group, const Offsets* offsets, vtkIdType* neighbours,
+  std::vector<NonManifoldPair>* pairs)
 {
   if (group.Manifold())
   {
-    const PointFan::Edge& a = group[0];
-    const PointFan::Edge& b = group[1];
+    const FanEdge& a = group[0];
+    const FanEdge& b = group[1];
     const vtkIdType same = a.Forward == b.Forward ? 1 : 0;
     neighbours[static_cast<vtkIdType>(offsets[a.Polygon]) + a.Slot] = 2 * b.Polygon + same;
     neighbours[static_cast<vtkIdType>(offsets[b.Polygon]) + b.Slot] = 2 * a.Polygon + same;
   }
   else if (pairs && group.Size >= 2)
   {
-    const PointFan::Edge* first = &group[0];
+    const FanEdge* first = &group[0];
     for (std::size_t j = 1; j < group.Size; ++j)
     {
       first = group[j].Before(*first) ? &group[j] : first;
@@ -374,13 +404,13 @@ constexpr vtkIdType FanLookAhead = 8;
  * own `Local` (default-constructed, kept from point to point), from several threads, each point
  * on its own; first, each edge from its smaller point, what `records` asks for (EdgeRecords).
  */
-template <class Local, class AtPoint, class AheadFn>
-void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links, bool after,
+template <class Local, class Links, class AtPoint, class AheadFn>
+void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, Links& links, bool after,
   EdgeRecords& records, const AtPoint& atPoint, const AheadFn& ahead)
 {
   struct Scratch
   {
-    PointFan Fan;
+    PointFanOf<LinkId<Links>> Fan;
     std::vector<NonManifoldPair> Pairs;
     vtkIdType Disagreeing = 0;
     Local Own;
@@ -396,7 +426,7 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
         [&](vtkIdType begin, vtkIdType end)
         {
           Scratch& local = scratch.Local();
-          PointFan& fan = local.Fan;
+          auto& fan = local.Fan;
           for (vtkIdType p = begin; p < end; ++p)
           {
             if (records.StopAtDisagreeing &&
@@ -410,7 +440,7 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
             // its offset, itself apart: the offsets are asked for twice as far ahead.
             if (p + 2 * FanLookAhead < end)
             {
-              const vtkIdType* later = links.GetCells(p + 2 * FanLookAhead);
+              const auto* later = links.GetCells(p + 2 * FanLookAhead);
               for (vtkIdType j = 0, n = links.GetNumberOfCells(p + 2 * FanLookAhead); j < n; ++j)
               {
                 PrefetchAddress(offsets + later[j]);
@@ -418,7 +448,7 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
             }
             if (p + FanLookAhead < end)
             {
-              const vtkIdType* next = links.GetCells(p + FanLookAhead);
+              const auto* next = links.GetCells(p + FanLookAhead);
               for (vtkIdType j = 0, n = links.GetNumberOfCells(p + FanLookAhead); j < n; ++j)
               {
                 // Both ends of the polygon's ids: a triangle's 24 bytes straddle two cache
@@ -430,7 +460,7 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
             }
             fan.Build(p, links.GetCells(p), links.GetNumberOfCells(p), offsets, conn, after);
             fan.ForGroups(
-              [&](const PointFan::Group& group)
+              [&](const FanGroup& group)
               {
                 // Each edge from its smaller point; counted without a branch on that.
                 const bool mine = group[0].Q > p;
@@ -467,14 +497,14 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
  * What `records` asks for about the edges of `polys` (valid point ids, `links` theirs), from a
  * pass over the fans that does nothing else (each edge from its smaller point).
  */
-inline void RecordEdges(
-  vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links, EdgeRecords& records)
+template <class Links>
+void RecordEdges(vtkIdType numPoints, vtkCellArray* polys, Links& links, EdgeRecords& records)
 {
   struct Nothing
   {
   };
   ForPointFans<Nothing>(
-    numPoints, polys, links, true, records, [](vtkIdType, const PointFan&, Nothing&) {},
+    numPoints, polys, links, true, records, [](vtkIdType, const auto&, Nothing&) {},
     [](vtkIdType) {});
 }
 
@@ -483,8 +513,9 @@ inline void RecordEdges(
  * `nonManifold`, also every polygon around each non-manifold edge paired with the smallest one
  * around it, sorted by slot.
  */
-inline std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* polys,
-  PolygonLinks& links, std::vector<NonManifoldPair>* nonManifold = nullptr)
+template <class Links>
+std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* polys, Links& links,
+  std::vector<NonManifoldPair>* nonManifold = nullptr)
 {
   std::vector<vtkIdType> neighbours(
     static_cast<std::size_t>(polys->GetConnectivityArray()->GetNumberOfValues()), -1);

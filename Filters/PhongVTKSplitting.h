@@ -53,11 +53,12 @@ struct SplitPolygons
  * The regions of the polygons around one point: the `Label` of each of its polygons (sorted,
  * each once: `Faces` when given its links, the fan's when given a PointFan), 0 for the first
  * region and for polygons without a direction, 1, 2, ... for the regions whose copies are
- * appended; `Regions` their number.
+ * appended; `Regions` their number. Polygons are ids of type Id, the links'.
  */
-struct PointRegions
+template <class Id>
+struct PointRegionsOf
 {
-  std::vector<vtkIdType> Faces;
+  std::vector<Id> Faces;
   std::vector<std::int32_t> Label;
   std::int32_t Regions = 0;
 
@@ -80,12 +81,12 @@ struct PointRegions
    * edge between two directed polygons is smooth.
    */
   template <class AcrossFn, class DirectedFn, class SmoothFn>
-  void Compute(vtkIdType p, const vtkIdType* cells, vtkIdType count, const AcrossFn& across,
+  void Compute(vtkIdType p, const Id* cells, vtkIdType count, const AcrossFn& across,
     const DirectedFn& directed, const SmoothFn& smooth)
   {
     (void)p;
     std::size_t distinct;
-    const vtkIdType* faces = DistinctSorted(cells, count, this->Faces, distinct);
+    const Id* faces = DistinctSorted(cells, count, this->Faces, distinct);
     if (faces == cells)
     {
       this->Faces.assign(cells, cells + count);
@@ -119,18 +120,18 @@ struct PointRegions
    * `smooth(f1, f2, same)` says the edge is smooth, `same` when both run along it the same way.
    */
   template <class DirectedFn, class SmoothFn>
-  void Compute(const PointFan& fan, const DirectedFn& directed, const SmoothFn& smooth)
+  void Compute(const PointFanOf<Id>& fan, const DirectedFn& directed, const SmoothFn& smooth)
   {
     this->Start(fan.Faces, fan.NumberOfFaces);
     fan.ForGroups(
-      [&](const PointFan::Group& group)
+      [&](const FanGroup& group)
       {
         if (!group.Manifold())
         {
           return;
         }
-        const PointFan::Edge& a = group[0];
-        const PointFan::Edge& b = group[1];
+        const FanEdge& a = group[0];
+        const FanEdge& b = group[1];
         if (directed(a.Polygon) && directed(b.Polygon) &&
           smooth(a.Polygon, b.Polygon, a.Forward == b.Forward))
         {
@@ -143,7 +144,7 @@ struct PointRegions
   /// The index of polygon f (one of Faces) in Faces: a linear search, as a point has few.
   std::int32_t IndexOf(vtkIdType f) const
   {
-    const vtkIdType* faces = this->FaceList;
+    const Id* faces = this->FaceList;
     const auto n = static_cast<std::int32_t>(this->NumberOfFaces);
     if (n > 16)
     {
@@ -161,10 +162,10 @@ struct PointRegions
   std::int32_t LabelOf(vtkIdType f) const { return this->Label[this->IndexOf(f)]; }
 
 private:
-  const vtkIdType* FaceList = nullptr; // Faces' data, or the fan's
+  const Id* FaceList = nullptr; // Faces' data, or the fan's
   std::size_t NumberOfFaces = 0;
 
-  void Start(const vtkIdType* faces, std::size_t n)
+  void Start(const Id* faces, std::size_t n)
   {
     this->FaceList = faces;
     this->NumberOfFaces = n;
@@ -221,6 +222,9 @@ private:
   }
 };
 
+/// The regions of a point whose links are of vtkIdType.
+using PointRegions = PointRegionsOf<vtkIdType>;
+
 /**
  * The regions of every point: the number of copies of every point (`Copies[p + 1]`, then summed
  * into the first copy's number) and the label of every link (point, polygon) of the points with
@@ -233,8 +237,9 @@ struct RegionLabels
   std::vector<vtkIdType> Copies;
 
   /// Keeps what `regions` (of point p, whose links are `cells[0 .. count)` from `first`) says.
-  void Store(vtkIdType p, const vtkIdType* cells, vtkIdType count, std::size_t first,
-    const PointFan& fan, const PointRegions& regions)
+  template <class Id>
+  void Store(vtkIdType p, const Id* cells, vtkIdType count, std::size_t first,
+    const PointFanOf<Id>& fan, const PointRegionsOf<Id>& regions)
   {
     this->Copies[static_cast<std::size_t>(p) + 1] = std::max<vtkIdType>(regions.Regions - 1, 0);
     if (regions.Regions <= 1)
@@ -261,17 +266,17 @@ struct RegionLabels
  * are taken in parallel, each on its own: the same result for any number of threads. The fans
  * give what `records` asks for about the edges on the way (EdgeRecords).
  */
-template <class DirectedFn, class SmoothFn, class AheadFn>
-RegionLabels SharpEdgeRegions(vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links,
+template <class Links, class DirectedFn, class SmoothFn, class AheadFn>
+RegionLabels SharpEdgeRegions(vtkIdType numPoints, vtkCellArray* polys, Links& links,
   EdgeRecords& records, const DirectedFn& directed, const SmoothFn& smooth, const AheadFn& ahead)
 {
   RegionLabels labels;
   // Not zero-filled: written only for the points with copies, read only for them.
   labels.LinkLabel.reset(new std::int32_t[static_cast<std::size_t>(links.GetLinksSize())]);
   labels.Copies.assign(static_cast<std::size_t>(numPoints) + 1, 0);
-  ForPointFans<PointRegions>(
+  ForPointFans<PointRegionsOf<LinkId<Links>>>(
     numPoints, polys, links, false, records,
-    [&](vtkIdType p, const PointFan& fan, PointRegions& regions)
+    [&](vtkIdType p, const auto& fan, auto& regions)
     {
       const vtkIdType count = links.GetNumberOfCells(p);
       const auto first = static_cast<std::size_t>(links.GetOffset(p));
@@ -290,12 +295,12 @@ RegionLabels SharpEdgeRegions(vtkIdType numPoints, vtkCellArray* polys, PolygonL
  * Decides the regions of the points `redo` (sorted, each once) again, as SharpEdgeRegions does:
  * after the polygons were reordered, for the points of the polygons whose edges still disagree.
  */
-template <class DirectedFn, class SmoothFn>
-void RedoRegions(const std::vector<vtkIdType>& redo, vtkCellArray* polys, PolygonLinks& links,
+template <class Links, class DirectedFn, class SmoothFn>
+void RedoRegions(const std::vector<vtkIdType>& redo, vtkCellArray* polys, Links& links,
   RegionLabels& labels, const DirectedFn& directed, const SmoothFn& smooth)
 {
-  PointFan fan;
-  PointRegions regions;
+  PointFanOf<LinkId<Links>> fan;
+  PointRegionsOf<LinkId<Links>> regions;
   polys->Visit(RawCells{},
     [&](const auto* offsets, const auto* conn)
     {
@@ -319,8 +324,9 @@ void RedoRegions(const std::vector<vtkIdType>& redo, vtkCellArray* polys, Polygo
  * `links` theirs) with each point's polygons of region r > 0 referring to its copy r, the
  * copies numbered point by point. Without a split point the polygons are `polys` itself.
  */
-inline SplitPolygons ApplyRegions(
-  vtkIdType numPoints, vtkCellArray* polys, PolygonLinks& links, RegionLabels& labels)
+template <class Links>
+SplitPolygons ApplyRegions(
+  vtkIdType numPoints, vtkCellArray* polys, Links& links, RegionLabels& labels)
 {
   const vtkIdType numPolys = polys->GetNumberOfCells();
   std::vector<vtkIdType>& copies = labels.Copies;
@@ -363,7 +369,7 @@ inline SplitPolygons ApplyRegions(
                 }
                 std::fill_n(result.CopyOf.begin() + (start - numPoints), added, p);
                 const vtkIdType count = links.GetNumberOfCells(p);
-                const vtkIdType* cells = links.GetCells(p);
+                const auto* cells = links.GetCells(p);
                 const std::size_t first = static_cast<std::size_t>(links.GetOffset(p));
                 for (vtkIdType j = 0; j < count; ++j)
                 {

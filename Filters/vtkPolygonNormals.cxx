@@ -508,7 +508,9 @@ namespace
 /// Consistency.
 struct Adjacency
 {
-  phongvtk::PolygonLinks Links;
+  phongvtk::CompactPolygonLinks CompactLinks; // 32-bit ids, where the mesh fits them
+  phongvtk::PolygonLinks Links;               // vtkIdType, where it does not
+  bool Compact = false;
   bool LinksBuilt = false;
   bool WantNeighbours = false;  // Consistency or AutoOrientNormals
   bool WantComponents = false;  // AutoOrientNormals: the neighbours even where all agree
@@ -524,8 +526,24 @@ struct Adjacency
   {
     if (!this->LinksBuilt)
     {
-      phongvtk::BuildPolygonLinks(mesh->GetPoints(), mesh->GetPolys(), this->Links);
+      this->Compact = phongvtk::FitsCompactLinks(mesh->GetNumberOfPoints(), mesh->GetPolys());
+      this->WithLinks([&](auto& links)
+        { phongvtk::BuildPolygonLinks(mesh->GetPoints(), mesh->GetPolys(), links); });
       this->LinksBuilt = true;
+    }
+  }
+
+  /// fn(links), with the links BuildLinks built.
+  template <class Fn>
+  void WithLinks(Fn&& fn)
+  {
+    if (this->Compact)
+    {
+      fn(this->CompactLinks);
+    }
+    else
+    {
+      fn(this->Links);
     }
   }
 
@@ -572,7 +590,8 @@ struct Adjacency
     phongvtk::EdgeRecords records;
     records.CountNonManifold = this->WantNonManifold;
     records.StopAtDisagreeing = true;
-    phongvtk::RecordEdges(mesh->GetNumberOfPoints(), mesh->GetPolys(), this->Links, records);
+    this->WithLinks([&](auto& links)
+      { phongvtk::RecordEdges(mesh->GetNumberOfPoints(), mesh->GetPolys(), links, records); });
     this->Recorded(records);
   }
 
@@ -581,8 +600,12 @@ struct Adjacency
     if (!this->NeighboursBuilt)
     {
       this->BuildLinks(mesh);
-      this->Neighbours = phongvtk::EdgeNeighbours(mesh->GetNumberOfPoints(), mesh->GetPolys(),
-        this->Links, this->WantNonManifold ? &this->NonManifold : nullptr);
+      this->WithLinks(
+        [&](auto& links)
+        {
+          this->Neighbours = phongvtk::EdgeNeighbours(mesh->GetNumberOfPoints(), mesh->GetPolys(),
+            links, this->WantNonManifold ? &this->NonManifold : nullptr);
+        });
       this->NeighboursBuilt = true;
     }
   }
@@ -720,16 +743,20 @@ struct SharpEdges
     polys->Visit(RawCells{},
       [&](const auto* offsets, const auto* conn)
       {
-        this->Labels = phongvtk::SharpEdgeRegions(
-          this->Input->GetNumberOfPoints(), polys, adjacency.Links, records,
-          [&](vtkIdType f) { return this->Directed(f); },
-          [&](vtkIdType f1, vtkIdType f2, bool same)
-          { return this->Smooth(f1, f2, consistent && same, offsets, conn, c); },
-          [&](vtkIdType f)
+        adjacency.WithLinks(
+          [&](auto& links)
           {
-            phongvtk::PrefetchAddress(this->Normals.get() + 3 * (this->FirstPoly + f));
-            phongvtk::PrefetchAddress(this->Normals.get() + 3 * (this->FirstPoly + f) + 2);
-            phongvtk::PrefetchAddress(this->Status.get() + this->FirstPoly + f);
+            this->Labels = phongvtk::SharpEdgeRegions(
+              this->Input->GetNumberOfPoints(), polys, links, records,
+              [&](vtkIdType f) { return this->Directed(f); },
+              [&](vtkIdType f1, vtkIdType f2, bool same)
+              { return this->Smooth(f1, f2, consistent && same, offsets, conn, c); },
+              [&](vtkIdType f)
+              {
+                phongvtk::PrefetchAddress(this->Normals.get() + 3 * (this->FirstPoly + f));
+                phongvtk::PrefetchAddress(this->Normals.get() + 3 * (this->FirstPoly + f) + 2);
+                phongvtk::PrefetchAddress(this->Status.get() + this->FirstPoly + f);
+              });
           });
       });
     adjacency.Recorded(records);
@@ -757,14 +784,17 @@ struct SharpEdges
         }
         std::sort(redo.begin(), redo.end());
         redo.erase(std::unique(redo.begin(), redo.end()), redo.end());
-        phongvtk::RedoRegions(
-          redo, polys, adjacency.Links, this->Labels,
-          [&](vtkIdType f) { return this->Directed(f); },
-          [&](vtkIdType f1, vtkIdType f2, bool)
+        adjacency.WithLinks(
+          [&](auto& links)
           {
-            const bool opposite =
-              reverse[static_cast<std::size_t>(f1)] != reverse[static_cast<std::size_t>(f2)];
-            return this->Smooth(f1, f2, opposite, offsets, conn, c);
+            phongvtk::RedoRegions(
+              redo, polys, links, this->Labels, [&](vtkIdType f) { return this->Directed(f); },
+              [&](vtkIdType f1, vtkIdType f2, bool)
+              {
+                const bool opposite =
+                  reverse[static_cast<std::size_t>(f1)] != reverse[static_cast<std::size_t>(f2)];
+                return this->Smooth(f1, f2, opposite, offsets, conn, c);
+              });
           });
       });
   }
@@ -778,8 +808,12 @@ struct SharpEdges
     phongvtk::SplitPolygons split;
     if (!this->Labels.Copies.empty()) // polygons to split
     {
-      split = phongvtk::ApplyRegions(
-        oriented->GetNumberOfPoints(), oriented->GetPolys(), adjacency.Links, this->Labels);
+      adjacency.WithLinks(
+        [&](auto& links)
+        {
+          split = phongvtk::ApplyRegions(
+            oriented->GetNumberOfPoints(), oriented->GetPolys(), links, this->Labels);
+        });
       this->Labels = phongvtk::RegionLabels();
     }
     return phongvtk::MeshWithCopies(oriented, split, this->Self->GetComputeOriginalPointIds());

@@ -431,6 +431,91 @@ TEST(SplittingRegions, AFanGroupsItsEdgesByTheirOtherPoint)
   }
 }
 
+TEST(SplittingRegions, CompactAndWideLinksGiveTheSameRegionsNeighboursAndPolygons)
+{
+  // The filter takes 32-bit links wherever a mesh fits them (every mesh of this suite); the
+  // vtkIdType links serve the meshes that do not. Both, on real meshes, give the same copies, the
+  // same labels of the split points, the same split polygons and the same edge neighbours.
+  std::vector<vtkSmartPointer<vtkPolyData>> meshes = { RoughSphere(40, 0.3, 3) };
+  if (phongvtk_test::HaveCGALMeshes())
+  {
+    for (const char* name : { "fandisk.off", "cross.off" })
+    {
+      meshes.push_back(phongvtk_test::ReadOFF(phongvtk_test::CGALMeshPath(name)));
+    }
+  }
+  for (vtkPolyData* mesh : meshes)
+  {
+    ASSERT_NE(mesh, nullptr);
+    vtkCellArray* polys = mesh->GetPolys();
+    const vtkIdType numPoints = mesh->GetNumberOfPoints();
+    ASSERT_TRUE(phongvtk::FitsCompactLinks(numPoints, polys));
+    // Unit normals of the polygons (Newell), sharp at 30 degrees.
+    std::vector<double> normals;
+    for (const auto& polygon : PolygonsOf(mesh))
+    {
+      double n[3] = { 0, 0, 0 };
+      for (std::size_t i = 0; i < polygon.size(); ++i)
+      {
+        double a[3], b[3];
+        mesh->GetPoint(polygon[i], a);
+        mesh->GetPoint(polygon[(i + 1) % polygon.size()], b);
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+        n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+        n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+      }
+      vtkMath::Normalize(n);
+      normals.insert(normals.end(), n, n + 3);
+    }
+    auto directed = [](vtkIdType)
+    {
+      return true;
+    };
+    auto smooth = [&](vtkIdType f, vtkIdType g, bool same)
+    {
+      const double d = vtkMath::Dot(&normals[3 * f], &normals[3 * g]);
+      return (same ? -d : d) > std::cos(vtkMath::RadiansFromDegrees(30.0));
+    };
+    auto regions = [&](auto& links, phongvtk::SplitPolygons& split, std::vector<vtkIdType>& copies,
+                     std::vector<std::int32_t>& labels, std::vector<vtkIdType>& neighbours)
+    {
+      phongvtk::BuildPolygonLinks(mesh->GetPoints(), polys, links);
+      phongvtk::EdgeRecords records;
+      phongvtk::RegionLabels found = phongvtk::SharpEdgeRegions(
+        numPoints, polys, links, records, directed, smooth, [](vtkIdType) {});
+      copies = found.Copies;
+      for (vtkIdType p = 0; p < numPoints; ++p)
+      {
+        if (found.Copies[static_cast<std::size_t>(p) + 1] > 0) // labels of split points only
+        {
+          const auto first = static_cast<std::size_t>(links.GetOffset(p));
+          labels.insert(labels.end(), found.LinkLabel.get() + first,
+            found.LinkLabel.get() + first + links.GetNumberOfCells(p));
+        }
+      }
+      split = phongvtk::ApplyRegions(numPoints, polys, links, found);
+      neighbours = phongvtk::EdgeNeighbours(numPoints, polys, links);
+    };
+    phongvtk::CompactPolygonLinks compact;
+    phongvtk::PolygonLinks wide;
+    phongvtk::SplitPolygons a, b;
+    std::vector<vtkIdType> copiesA, copiesB, neighboursA, neighboursB;
+    std::vector<std::int32_t> labelsA, labelsB;
+    regions(compact, a, copiesA, labelsA, neighboursA);
+    regions(wide, b, copiesB, labelsB, neighboursB);
+    EXPECT_GT(std::accumulate(copiesA.begin(), copiesA.end(), vtkIdType(0)), 0)
+      << "the test mesh must split somewhere";
+    EXPECT_EQ(copiesA, copiesB);
+    EXPECT_EQ(labelsA, labelsB);
+    EXPECT_EQ(a.CopyOf, b.CopyOf);
+    vtkNew<vtkPolyData> ma, mb;
+    ma->SetPolys(a.Polys);
+    mb->SetPolys(b.Polys);
+    EXPECT_EQ(PolygonsOf(ma), PolygonsOf(mb));
+    EXPECT_EQ(neighboursA, neighboursB);
+  }
+}
+
 //==============================================================================
 // The sharp-edge decision against exact rational arithmetic
 
