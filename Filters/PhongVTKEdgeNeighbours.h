@@ -422,7 +422,7 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, Links& links, bool a
   polys->Visit(RawCells{},
     [&](const auto* offsets, const auto* conn)
     {
-      phongvtk::For(0, numPoints, polys->GetNumberOfCells(),
+      phongvtk::For(0, numPoints, FanWork * polys->GetNumberOfCells(),
         [&](vtkIdType begin, vtkIdType end)
         {
           Scratch& local = scratch.Local();
