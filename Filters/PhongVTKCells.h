@@ -85,6 +85,14 @@ inline void PrefetchAddress(const void* address)
 #endif
 }
 
+/// Asks for a small record `first` ... `last` (both ends: a triangle's ids or a normal, 24
+/// bytes, straddle two cache lines one time in three).
+inline void PrefetchRecord(const void* first, const void* last)
+{
+  PrefetchAddress(first);
+  PrefetchAddress(last);
+}
+
 /// Pointers to the coordinates of the corners of triangles `cell` ... `cell + 3` (and the
 /// connectivity further on asked for: PrefetchCells).
 template <class T, class Offsets, class Connectivity>

@@ -451,10 +451,7 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, Links& links, bool a
               const auto* next = links.GetCells(p + FanLookAhead);
               for (vtkIdType j = 0, n = links.GetNumberOfCells(p + FanLookAhead); j < n; ++j)
               {
-                // Both ends of the polygon's ids: a triangle's 24 bytes straddle two cache
-                // lines one time in three.
-                PrefetchAddress(conn + offsets[next[j]]);
-                PrefetchAddress(conn + offsets[next[j] + 1] - 1);
+                PrefetchRecord(conn + offsets[next[j]], conn + offsets[next[j] + 1] - 1);
                 ahead(next[j]);
               }
             }

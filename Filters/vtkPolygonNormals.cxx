@@ -753,8 +753,8 @@ struct SharpEdges
               { return this->Smooth(f1, f2, consistent && same, offsets, conn, c); },
               [&](vtkIdType f)
               {
-                phongvtk::PrefetchAddress(this->Normals.get() + 3 * (this->FirstPoly + f));
-                phongvtk::PrefetchAddress(this->Normals.get() + 3 * (this->FirstPoly + f) + 2);
+                const double* normal = this->Normals.get() + 3 * (this->FirstPoly + f);
+                phongvtk::PrefetchRecord(normal, normal + 2);
                 phongvtk::PrefetchAddress(this->Status.get() + this->FirstPoly + f);
               });
           });
