@@ -205,6 +205,14 @@ struct FanGroup
  * having the edge p-q has p, so the whole group is in p's fan. The edges are listed in the order
  * of the sorted polygons, so the groups and their members do not depend on the order of the
  * links. Its polygons are ids of type Id, the links'.
+ *
+ * Most fans of most meshes are plain triangle fans (`Plain`): every polygon a triangle with p at
+ * one corner, no two of them running from p to the same point or from the same point to p. Then
+ * every edge p-q is either one triangle's (a boundary) or two triangles' running along it in
+ * opposite directions (a manifold edge where they agree), and the fan is kept as its triangles'
+ * points after and before p and the pairs (`Next`, `Previous`, `Match`), found with a hash of the
+ * point ids and without listing the edges; the edges and groups are listed (as for any other fan)
+ * only if ForGroups asks for them.
  */
 template <class Id>
 struct PointFanOf
@@ -214,8 +222,14 @@ struct PointFanOf
 
   const Id* Faces = nullptr;
   std::size_t NumberOfFaces = 0;
-  std::vector<Edge> Edges; // the first NumberOfEdges are the fan's
-  std::size_t NumberOfEdges = 0;
+
+  /// At most this many triangles make a plain fan.
+  static constexpr std::size_t PlainMax = 16;
+  bool Plain = false;
+  vtkIdType Next[PlainMax];      // triangle i runs p -> Next[i] (its edge slot Corner[i])
+  vtkIdType Previous[PlainMax];  // and Previous[i] -> p (its slot Corner[i] - 1, mod 3)
+  std::int32_t Corner[PlainMax]; // p's corner
+  std::int32_t Match[PlainMax];  // j with Previous[j] == Next[i] (the edge's other triangle), -1
 
   /**
    * The fan of p from its links `cells[0 .. count)` in `offsets` and `conn`; with `after`, only
@@ -226,6 +240,13 @@ struct PointFanOf
     const Connectivity* conn, bool after)
   {
     this->Faces = DistinctSorted(cells, count, this->SortedFaces, this->NumberOfFaces);
+    this->P = p;
+    this->Listed = false;
+    this->Plain = !after && this->BuildPlain(p, offsets, conn);
+    if (this->Plain)
+    {
+      return;
+    }
     // Each edge written field by field into room kept from point to point: an Edge built aside
     // and copied in cost a stalled store-to-load forwarding per edge (a tenth of the splitting).
     this->NumberOfEdges = 0;
@@ -258,6 +279,7 @@ struct PointFanOf
   template <class Fn>
   void ForGroups(Fn&& fn) const
   {
+    this->ListPlain();
     std::size_t begin = 0;
     for (const std::size_t end : this->GroupEnd)
     {
@@ -266,9 +288,145 @@ struct PointFanOf
     }
   }
 
+  /// The pairs of a plain fan: calls fn(i, j) for every manifold edge p-q, i and j the indices
+  /// in Faces of its triangle running p -> q and of the one running q -> p.
+  template <class Fn>
+  void ForPlainPairs(Fn&& fn) const
+  {
+    for (std::size_t i = 0; i < this->NumberOfFaces; ++i)
+    {
+      if (this->Match[i] >= 0)
+      {
+        fn(static_cast<std::int32_t>(i), this->Match[i]);
+      }
+    }
+  }
+
 private:
   std::vector<Id> SortedFaces;
+  vtkIdType P = -1;
+  bool Listed = false; // a plain fan's edges and groups are listed
 
+  /// A hash of a point id into [0, 64) (Fibonacci hashing: neighbouring ids land apart).
+  static unsigned Hash(vtkIdType q)
+  {
+    return static_cast<unsigned>((static_cast<std::uint64_t>(q) * 0x9E3779B97F4A7C15ull) >> 58);
+  }
+
+  /**
+   * Whether the fan of p (Faces) is plain, filling Next, Previous, Corner and Match if so. The
+   * points after p are distinct when their hashes are (and those before p too); where two
+   * hashes meet the fan is taken as not plain (the general listing then decides): a few fans in
+   * five with random ids, so the test stays a handful of operations per triangle.
+   */
+  template <class Offsets, class Connectivity>
+  bool BuildPlain(vtkIdType p, const Offsets* offsets, const Connectivity* conn)
+  {
+    const std::size_t n = this->NumberOfFaces;
+    if (n > PlainMax)
+    {
+      return false;
+    }
+    std::uint64_t nextHashes = 0, previousHashes = 0;
+    std::int32_t previousAt[64];
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const vtkIdType f = this->Faces[i];
+      if (offsets[f + 1] - offsets[f] != 3)
+      {
+        return false;
+      }
+      const Connectivity* ids = conn + offsets[f];
+      const auto a = static_cast<vtkIdType>(ids[0]);
+      const auto b = static_cast<vtkIdType>(ids[1]);
+      const auto c = static_cast<vtkIdType>(ids[2]);
+      const unsigned at = unsigned(a == p) | unsigned(b == p) << 1 | unsigned(c == p) << 2;
+      if (at != 1 && at != 2 && at != 4)
+      {
+        return false; // p at no corner, or at two (a degenerate triangle)
+      }
+      const vtkIdType next = at == 1 ? b : (at == 2 ? c : a);
+      const vtkIdType previous = at == 1 ? c : (at == 2 ? a : b);
+      this->Next[i] = next;
+      this->Previous[i] = previous;
+      this->Corner[i] = static_cast<std::int32_t>(at >> 1);
+      const unsigned hp = Hash(previous);
+      nextHashes |= std::uint64_t(1) << Hash(next);
+      previousHashes |= std::uint64_t(1) << hp;
+      previousAt[hp] = static_cast<std::int32_t>(i);
+    }
+    if (static_cast<std::size_t>(__builtin_popcountll(nextHashes)) != n ||
+      static_cast<std::size_t>(__builtin_popcountll(previousHashes)) != n)
+    {
+      return this->MatchPlain();
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const unsigned h = Hash(this->Next[i]);
+      const std::int32_t j = (previousHashes >> h & 1) ? previousAt[h] : -1;
+      if (j == static_cast<std::int32_t>(i) && this->Previous[i] == this->Next[i])
+      {
+        return false; // a triangle (p, q, q): one polygon along p-q twice
+      }
+      this->Match[i] = j >= 0 && this->Previous[j] == this->Next[i] ? j : -1;
+    }
+    return true;
+  }
+
+  /// BuildPlain's test and pairs where two hashes met: by comparing every two ids.
+  bool MatchPlain()
+  {
+    const auto n = static_cast<std::int32_t>(this->NumberOfFaces);
+    for (std::int32_t i = 0; i < n; ++i)
+    {
+      this->Match[i] = -1;
+      for (std::int32_t j = 0; j < n; ++j)
+      {
+        if (j != i && (this->Next[j] == this->Next[i] || this->Previous[j] == this->Previous[i]))
+        {
+          return false;
+        }
+        if (this->Previous[j] == this->Next[i])
+        {
+          if (j == i)
+          {
+            return false; // a triangle (p, q, q)
+          }
+          this->Match[i] = j;
+        }
+      }
+    }
+    return true;
+  }
+
+  /// Lists a plain fan's edges and groups as any other fan's (the same edges in the same order).
+  void ListPlain() const
+  {
+    if (!this->Plain || this->Listed)
+    {
+      return;
+    }
+    auto* self = const_cast<PointFanOf*>(this);
+    self->Listed = true;
+    self->NumberOfEdges = 0;
+    if (self->Edges.size() < 2 * this->NumberOfFaces)
+    {
+      self->Edges.resize(2 * this->NumberOfFaces);
+    }
+    for (std::size_t i = 0; i < this->NumberOfFaces; ++i)
+    {
+      const std::int32_t k = this->Corner[i];
+      self->Add(this->Next[i], this->Faces[i], k, i, 1);
+      self->Add(this->Previous[i], this->Faces[i], k == 0 ? 2 : k - 1, i, 0);
+    }
+    self->GroupEdges();
+  }
+
+public:
+  std::vector<Edge> Edges; // the first NumberOfEdges are the fan's (ForGroups lists them)
+  std::size_t NumberOfEdges = 0;
+
+private:
   /// Appends an edge (there is room).
   void Add(vtkIdType q, vtkIdType f, vtkIdType slot, std::size_t face, std::int32_t forward)
   {
@@ -456,6 +614,27 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, Links& links, bool a
               }
             }
             fan.Build(p, links.GetCells(p), links.GetNumberOfCells(p), offsets, conn, after);
+            if (fan.Plain)
+            {
+              // Every edge agrees and is manifold or a boundary: only the neighbours to write.
+              if (neighbours)
+              {
+                fan.ForPlainPairs(
+                  [&](std::int32_t i, std::int32_t j)
+                  {
+                    if (fan.Next[i] > p)
+                    {
+                      const vtkIdType fi = fan.Faces[i], fj = fan.Faces[j];
+                      const std::int32_t kj = fan.Corner[j];
+                      neighbours[static_cast<vtkIdType>(offsets[fi]) + fan.Corner[i]] = 2 * fj;
+                      neighbours[static_cast<vtkIdType>(offsets[fj]) + (kj == 0 ? 2 : kj - 1)] =
+                        2 * fi;
+                    }
+                  });
+              }
+              atPoint(p, fan, local.Own);
+              continue;
+            }
             fan.ForGroups(
               [&](const FanGroup& group)
               {

@@ -123,6 +123,22 @@ struct PointRegionsOf
   void Compute(const PointFanOf<Id>& fan, const DirectedFn& directed, const SmoothFn& smooth)
   {
     this->Start(fan.Faces, fan.NumberOfFaces);
+    if (fan.Plain)
+    {
+      fan.ForPlainPairs(
+        [&](std::int32_t i, std::int32_t j)
+        {
+          // In the order the general listing gives (the smaller index first).
+          const std::int32_t a = std::min(i, j), b = std::max(i, j);
+          const vtkIdType fa = fan.Faces[a], fb = fan.Faces[b];
+          if (directed(fa) && directed(fb) && smooth(fa, fb, false))
+          {
+            this->Join(a, b);
+          }
+        });
+      this->Finish(directed);
+      return;
+    }
     fan.ForGroups(
       [&](const FanGroup& group)
       {

@@ -1108,8 +1108,10 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
   const bool orient = (this->Consistency || this->AutoOrientNormals || this->FlipNormals) &&
     input->GetNumberOfPolys() > 0;
   const bool split = this->Splitting && this->ComputePointNormals;
-  if (orient)
+  if (orient && !split)
   {
+    // Splitting validates every cell on its first pass (SharpEdges::Decide), before anything
+    // reads a polygon's points; reordering alone reads them first.
     firstBadCell = FirstInvalidCell(input);
     ok = firstBadCell < 0;
   }

@@ -431,12 +431,163 @@ TEST(SplittingRegions, AFanGroupsItsEdgesByTheirOtherPoint)
   }
 }
 
+TEST(SplittingRegions, PlainTriangleFansAreTheOnesAPlainListingSaysAndPairAsItDoes)
+{
+  // Fans of 2 to 20 polygons around point 0 (at most PlainMax make a plain fan), with point ids
+  // from a small range (edges to one point meet often: manifold pairs, triangles running the same
+  // way, non-manifold edges) or a large one (the fast test's hashes of distinct ids meet as often
+  // as chance has them), and now and then a quad, a triangle with point 0 twice or one with another
+  // point twice. A fan is plain exactly when a plain listing finds every polygon a triangle with 0
+  // at one corner and no point twice among the points after 0 nor among those before; its pairs
+  // then match the point after 0 in one triangle with the point before 0 in another; and its groups
+  // (ForGroups) are every fan's.
+  std::mt19937 random(29);
+  int plain = 0, notPlain = 0;
+  for (int trial = 0; trial < 4000; ++trial)
+  {
+    const int n = 2 + static_cast<int>(random() % 19);
+    const vtkIdType range = trial % 2 ? 4 + n : 1000000;
+    std::vector<std::vector<vtkIdType>> polys;
+    for (int f = 0; f < n; ++f)
+    {
+      auto id = [&]
+      {
+        return 1 + static_cast<vtkIdType>(random() % static_cast<unsigned>(range));
+      };
+      std::vector<vtkIdType> polygon = { 0, id(), id() };
+      while (polygon[2] == polygon[1] && random() % 8 != 0) // now and then (0, q, q)
+      {
+        polygon[2] = id();
+      }
+      const unsigned odd = random() % 60;
+      if (odd == 0)
+      {
+        polygon.push_back(id()); // a quad
+      }
+      else if (odd == 1)
+      {
+        polygon[2] = 0; // point 0 twice
+      }
+      std::rotate(polygon.begin(), polygon.begin() + random() % polygon.size(), polygon.end());
+      polys.push_back(polygon);
+    }
+    std::vector<vtkIdType> offsets = { 0 }, conn, cells;
+    for (vtkIdType f = 0; f < n; ++f)
+    {
+      const auto& polygon = polys[static_cast<std::size_t>(f)];
+      conn.insert(conn.end(), polygon.begin(), polygon.end());
+      offsets.push_back(static_cast<vtkIdType>(conn.size()));
+      for (vtkIdType id : polygon)
+      {
+        if (id == 0)
+        {
+          cells.push_back(f); // the links: once per corner at 0, increasing
+        }
+      }
+    }
+    // The plain listing.
+    std::vector<vtkIdType> next, previous, corner;
+    bool expectPlain = static_cast<std::size_t>(n) <= phongvtk::PointFan::PlainMax;
+    for (const auto& polygon : polys)
+    {
+      const auto at = std::count(polygon.begin(), polygon.end(), vtkIdType(0));
+      if (polygon.size() != 3 || at != 1)
+      {
+        expectPlain = false;
+        break;
+      }
+      const auto k = std::find(polygon.begin(), polygon.end(), vtkIdType(0)) - polygon.begin();
+      corner.push_back(k);
+      next.push_back(polygon[static_cast<std::size_t>((k + 1) % 3)]);
+      previous.push_back(polygon[static_cast<std::size_t>((k + 2) % 3)]);
+      expectPlain = expectPlain && next.back() != previous.back();
+    }
+    if (expectPlain)
+    {
+      expectPlain = std::set<vtkIdType>(next.begin(), next.end()).size() == next.size() &&
+        std::set<vtkIdType>(previous.begin(), previous.end()).size() == previous.size();
+    }
+    phongvtk::PointFan fan;
+    fan.Build(
+      0, cells.data(), static_cast<vtkIdType>(cells.size()), offsets.data(), conn.data(), false);
+    ASSERT_EQ(fan.Plain, expectPlain) << "trial " << trial;
+    (expectPlain ? plain : notPlain)++;
+    if (expectPlain)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        ASSERT_EQ(fan.Faces[i], i);
+        EXPECT_EQ(fan.Next[i], next[static_cast<std::size_t>(i)]);
+        EXPECT_EQ(fan.Previous[i], previous[static_cast<std::size_t>(i)]);
+        EXPECT_EQ(fan.Corner[i], corner[static_cast<std::size_t>(i)]);
+        const auto j =
+          std::find(previous.begin(), previous.end(), next[static_cast<std::size_t>(i)]);
+        EXPECT_EQ(fan.Match[i], j == previous.end() ? -1 : j - previous.begin())
+          << "trial " << trial;
+      }
+    }
+    // The groups, plain or not: each holds exactly the edges to one point.
+    std::map<vtkIdType, std::multiset<std::tuple<vtkIdType, vtkIdType, int>>> expected, found;
+    for (vtkIdType f = 0; f < n; ++f)
+    {
+      const auto& polygon = polys[static_cast<std::size_t>(f)];
+      const auto m = static_cast<vtkIdType>(polygon.size());
+      for (vtkIdType k = 0; k < m; ++k)
+      {
+        if (polygon[static_cast<std::size_t>(k)] != 0)
+        {
+          continue;
+        }
+        const vtkIdType after = polygon[static_cast<std::size_t>((k + 1) % m)];
+        const vtkIdType before = polygon[static_cast<std::size_t>((k + m - 1) % m)];
+        if (after != 0)
+        {
+          expected[after].insert({ f, k, 1 });
+        }
+        if (before != 0)
+        {
+          expected[before].insert({ f, (k + m - 1) % m, 0 });
+        }
+      }
+    }
+    fan.ForGroups(
+      [&](const phongvtk::PointFan::Group& group)
+      {
+        for (std::size_t j = 0; j < group.Size; ++j)
+        {
+          EXPECT_EQ(group[j].Q, group[0].Q);
+          found[group[j].Q].insert({ group[j].Polygon, group[j].Slot, group[j].Forward });
+        }
+      });
+    ASSERT_TRUE(found == expected) << "trial " << trial;
+  }
+  // Both kinds, many times over.
+  EXPECT_GT(plain, 500);
+  EXPECT_GT(notPlain, 500);
+}
+
 TEST(SplittingRegions, CompactAndWideLinksGiveTheSameRegionsNeighboursAndPolygons)
 {
   // The filter takes 32-bit links wherever a mesh fits them (every mesh of this suite); the
   // vtkIdType links serve the meshes that do not. Both, on real meshes, give the same copies, the
   // same labels of the split points, the same split polygons and the same edge neighbours.
   std::vector<vtkSmartPointer<vtkPolyData>> meshes = { RoughSphere(40, 0.3, 3) };
+  {
+    // Every seventh triangle reversed: edges where two triangles run the same way.
+    auto flipped = RoughSphere(30, 0.2, 5);
+    vtkNew<vtkCellArray> polys;
+    vtkIdType f = 0;
+    for (auto polygon : PolygonsOf(flipped))
+    {
+      if (f++ % 7 == 3)
+      {
+        std::reverse(polygon.begin() + 1, polygon.end());
+      }
+      polys->InsertNextCell(static_cast<vtkIdType>(polygon.size()), polygon.data());
+    }
+    flipped->SetPolys(polys);
+    meshes.push_back(flipped);
+  }
   if (phongvtk_test::HaveCGALMeshes())
   {
     for (const char* name : { "fandisk.off", "cross.off" })
@@ -480,7 +631,13 @@ TEST(SplittingRegions, CompactAndWideLinksGiveTheSameRegionsNeighboursAndPolygon
                      std::vector<std::int32_t>& labels, std::vector<vtkIdType>& neighbours)
     {
       phongvtk::BuildPolygonLinks(mesh->GetPoints(), polys, links);
+      // The neighbours as the pass over the fans records them on the way (each edge from its
+      // smaller point, where the fan is plain from its own listing) must be those of a pass
+      // that lists every fan's edges.
+      std::vector<vtkIdType> recorded(
+        static_cast<std::size_t>(polys->GetConnectivityArray()->GetNumberOfValues()), -1);
       phongvtk::EdgeRecords records;
+      records.Neighbours = recorded.data();
       phongvtk::RegionLabels found = phongvtk::SharpEdgeRegions(
         numPoints, polys, links, records, directed, smooth, [](vtkIdType) {});
       copies = found.Copies;
@@ -495,6 +652,7 @@ TEST(SplittingRegions, CompactAndWideLinksGiveTheSameRegionsNeighboursAndPolygon
       }
       split = phongvtk::ApplyRegions(numPoints, polys, links, found);
       neighbours = phongvtk::EdgeNeighbours(numPoints, polys, links);
+      EXPECT_EQ(recorded, neighbours);
     };
     phongvtk::CompactPolygonLinks compact;
     phongvtk::PolygonLinks wide;
@@ -891,18 +1049,24 @@ TEST(Splitting, BadPointIdsAreStillAnErrorNamingTheCell)
   cells.Polys = PolygonsOf(cube);
   cells.Polys[4][2] = 8;
   auto bad = MakePolyData(phongvtk_test::PointsOf(cube), cells);
-  vtkNew<vtkPolygonNormals> f;
-  vtkNew<MessageObserver> messages;
-  messages->Watch(f);
-  f->ComputePointNormalsOn();
-  f->SplittingOn();
-  f->SetInputData(bad);
-  f->Update();
-  ASSERT_EQ(messages->Errors.size(), 1u);
-  EXPECT_NE(
-    messages->Errors[0].find("Cell 4 refers to a point id outside [0, 8)"), std::string::npos)
-    << messages->Errors[0];
-  EXPECT_EQ(f->GetOutput()->GetNumberOfCells(), 0);
+  // Alone, and with each reordering (then the splitting pass is the one that finds the cell).
+  for (int orient = 0; orient < 3; ++orient)
+  {
+    vtkNew<vtkPolygonNormals> f;
+    vtkNew<MessageObserver> messages;
+    messages->Watch(f);
+    f->ComputePointNormalsOn();
+    f->SplittingOn();
+    f->SetConsistency(orient == 1);
+    f->SetAutoOrientNormals(orient == 2);
+    f->SetInputData(bad);
+    f->Update();
+    ASSERT_EQ(messages->Errors.size(), 1u) << orient;
+    EXPECT_NE(
+      messages->Errors[0].find("Cell 4 refers to a point id outside [0, 8)"), std::string::npos)
+      << messages->Errors[0];
+    EXPECT_EQ(f->GetOutput()->GetNumberOfCells(), 0);
+  }
 }
 
 TEST(Splitting, RealMeshesSplitAsVTKDoesWhereItsFloatTestCannotBeFooled)
