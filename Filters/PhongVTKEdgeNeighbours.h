@@ -337,19 +337,21 @@ private:
         return false;
       }
       const Connectivity* ids = conn + offsets[f];
-      const auto a = static_cast<vtkIdType>(ids[0]);
-      const auto b = static_cast<vtkIdType>(ids[1]);
-      const auto c = static_cast<vtkIdType>(ids[2]);
-      const unsigned at = unsigned(a == p) | unsigned(b == p) << 1 | unsigned(c == p) << 2;
+      const unsigned at = unsigned(static_cast<vtkIdType>(ids[0]) == p) |
+        unsigned(static_cast<vtkIdType>(ids[1]) == p) << 1 |
+        unsigned(static_cast<vtkIdType>(ids[2]) == p) << 2;
       if (at != 1 && at != 2 && at != 4)
       {
         return false; // p at no corner, or at two (a degenerate triangle)
       }
-      const vtkIdType next = at == 1 ? b : (at == 2 ? c : a);
-      const vtkIdType previous = at == 1 ? c : (at == 2 ? a : b);
+      // The corners after and before p by index, not by a branch on which corner p is (meshes
+      // meet a point at any corner: the predictor cannot guess it).
+      const unsigned k = at >> 1;
+      const vtkIdType next = static_cast<vtkIdType>(ids[(0x021u >> (4 * k)) & 3]);
+      const vtkIdType previous = static_cast<vtkIdType>(ids[(0x102u >> (4 * k)) & 3]);
       this->Next[i] = next;
       this->Previous[i] = previous;
-      this->Corner[i] = static_cast<std::int32_t>(at >> 1);
+      this->Corner[i] = static_cast<std::int32_t>(k);
       const unsigned hp = Hash(previous);
       nextHashes |= std::uint64_t(1) << Hash(next);
       previousHashes |= std::uint64_t(1) << hp;
