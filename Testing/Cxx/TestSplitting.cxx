@@ -362,6 +362,73 @@ TEST(SplittingRegions, CornersAtAPointAreFoundWhereverAndHoweverOftenItIs)
   EXPECT_EQ(polygons, 320);
 }
 
+/// A fan's edges at point 0, (polygon, slot, 1 when it runs from 0), by their other point.
+using FanEdgeSets = std::map<vtkIdType, std::multiset<std::tuple<vtkIdType, vtkIdType, int>>>;
+
+/// Point 0's fan of `polys` as a plain listing has it: the cell array (Offsets, Conn), the links
+/// of point 0 (every polygon once per corner at 0, increasing) and the edges at 0.
+struct ListedFan
+{
+  std::vector<vtkIdType> Offsets = { 0 }, Conn, Cells;
+  FanEdgeSets Edges;
+
+  explicit ListedFan(const std::vector<std::vector<vtkIdType>>& polys)
+  {
+    for (vtkIdType f = 0; f < static_cast<vtkIdType>(polys.size()); ++f)
+    {
+      const auto& polygon = polys[static_cast<std::size_t>(f)];
+      this->Conn.insert(this->Conn.end(), polygon.begin(), polygon.end());
+      this->Offsets.push_back(static_cast<vtkIdType>(this->Conn.size()));
+      const auto m = static_cast<vtkIdType>(polygon.size());
+      for (vtkIdType k = 0; k < m; ++k)
+      {
+        if (polygon[static_cast<std::size_t>(k)] != 0)
+        {
+          continue;
+        }
+        this->Cells.push_back(f);
+        const vtkIdType next = polygon[static_cast<std::size_t>((k + 1) % m)];
+        const vtkIdType previous = polygon[static_cast<std::size_t>((k + m - 1) % m)];
+        if (next != 0)
+        {
+          this->Edges[next].insert({ f, k, 1 });
+        }
+        if (previous != 0)
+        {
+          this->Edges[previous].insert({ f, (k + m - 1) % m, 0 });
+        }
+      }
+    }
+  }
+
+  /// Point 0's fan built from them.
+  void Build(phongvtk::PointFan& fan) const
+  {
+    fan.Build(0, this->Cells.data(), static_cast<vtkIdType>(this->Cells.size()),
+      this->Offsets.data(), this->Conn.data(), false);
+  }
+};
+
+/// The edges of a fan's groups (ForGroups), each group checked to hold the edges to one point,
+/// each point's edges in one group.
+FanEdgeSets GroupsOf(const phongvtk::PointFan& fan)
+{
+  FanEdgeSets found;
+  fan.ForGroups(
+    [&](const phongvtk::PointFan::Group& group)
+    {
+      const vtkIdType q = group[0].Q;
+      EXPECT_EQ(found.count(q), 0u) << "two groups of q = " << q;
+      for (std::size_t j = 0; j < group.Size; ++j)
+      {
+        EXPECT_EQ(group[j].Q, q);
+        EXPECT_EQ(fan.Faces[group[j].Face], group[j].Polygon);
+        found[q].insert({ group[j].Polygon, group[j].Slot, group[j].Forward });
+      }
+    });
+  return found;
+}
+
 TEST(SplittingRegions, AFanGroupsItsEdgesByTheirOtherPoint)
 {
   // Point 0's fan: triangles around it, a quad, and a degenerate polygon that has point 0 twice
@@ -379,55 +446,10 @@ TEST(SplittingRegions, AFanGroupsItsEdgesByTheirOtherPoint)
     polys.push_back({ 0, 2, 9, 3 });    // a quad (its edges join the groups of 2 and 3)
     polys.push_back({ 0, 5, 0, 6, 7 }); // point 0 twice
     std::shuffle(polys.begin(), polys.end(), random);
-    std::vector<vtkIdType> offsets = { 0 }, conn;
-    for (const auto& polygon : polys)
-    {
-      conn.insert(conn.end(), polygon.begin(), polygon.end());
-      offsets.push_back(static_cast<vtkIdType>(conn.size()));
-    }
-    // The links of point 0: every polygon once per corner at 0, in increasing order.
-    std::vector<vtkIdType> cells;
-    std::map<vtkIdType, std::multiset<std::tuple<vtkIdType, vtkIdType, int>>> expected;
-    for (vtkIdType f = 0; f < static_cast<vtkIdType>(polys.size()); ++f)
-    {
-      const auto m = static_cast<vtkIdType>(polys[static_cast<std::size_t>(f)].size());
-      for (vtkIdType k = 0; k < m; ++k)
-      {
-        const auto& polygon = polys[static_cast<std::size_t>(f)];
-        if (polygon[static_cast<std::size_t>(k)] != 0)
-        {
-          continue;
-        }
-        cells.push_back(f);
-        const vtkIdType next = polygon[static_cast<std::size_t>((k + 1) % m)];
-        const vtkIdType previous = polygon[static_cast<std::size_t>((k + m - 1) % m)];
-        if (next != 0)
-        {
-          expected[next].insert({ f, k, 1 });
-        }
-        if (previous != 0)
-        {
-          expected[previous].insert({ f, (k + m - 1) % m, 0 });
-        }
-      }
-    }
+    const ListedFan listed(polys);
     phongvtk::PointFan fan;
-    fan.Build(
-      0, cells.data(), static_cast<vtkIdType>(cells.size()), offsets.data(), conn.data(), false);
-    std::map<vtkIdType, std::multiset<std::tuple<vtkIdType, vtkIdType, int>>> found;
-    fan.ForGroups(
-      [&](const phongvtk::PointFan::Group& group)
-      {
-        const vtkIdType q = group[0].Q;
-        EXPECT_EQ(found.count(q), 0u) << "two groups of q = " << q;
-        for (std::size_t j = 0; j < group.Size; ++j)
-        {
-          EXPECT_EQ(group[j].Q, q);
-          EXPECT_EQ(fan.Faces[group[j].Face], group[j].Polygon);
-          found[q].insert({ group[j].Polygon, group[j].Slot, group[j].Forward });
-        }
-      });
-    EXPECT_TRUE(found == expected) << n << " triangles";
+    listed.Build(fan);
+    EXPECT_TRUE(GroupsOf(fan) == listed.Edges) << n << " triangles";
   }
 }
 
@@ -471,20 +493,7 @@ TEST(SplittingRegions, PlainTriangleFansAreTheOnesAPlainListingSaysAndPairAsItDo
       std::rotate(polygon.begin(), polygon.begin() + random() % polygon.size(), polygon.end());
       polys.push_back(polygon);
     }
-    std::vector<vtkIdType> offsets = { 0 }, conn, cells;
-    for (vtkIdType f = 0; f < n; ++f)
-    {
-      const auto& polygon = polys[static_cast<std::size_t>(f)];
-      conn.insert(conn.end(), polygon.begin(), polygon.end());
-      offsets.push_back(static_cast<vtkIdType>(conn.size()));
-      for (vtkIdType id : polygon)
-      {
-        if (id == 0)
-        {
-          cells.push_back(f); // the links: once per corner at 0, increasing
-        }
-      }
-    }
+    const ListedFan listed(polys);
     // The plain listing.
     std::vector<vtkIdType> next, previous, corner;
     bool expectPlain = static_cast<std::size_t>(n) <= phongvtk::PointFan::PlainMax;
@@ -508,8 +517,7 @@ TEST(SplittingRegions, PlainTriangleFansAreTheOnesAPlainListingSaysAndPairAsItDo
         std::set<vtkIdType>(previous.begin(), previous.end()).size() == previous.size();
     }
     phongvtk::PointFan fan;
-    fan.Build(
-      0, cells.data(), static_cast<vtkIdType>(cells.size()), offsets.data(), conn.data(), false);
+    listed.Build(fan);
     ASSERT_EQ(fan.Plain, expectPlain) << "trial " << trial;
     (expectPlain ? plain : notPlain)++;
     if (expectPlain)
@@ -527,39 +535,7 @@ TEST(SplittingRegions, PlainTriangleFansAreTheOnesAPlainListingSaysAndPairAsItDo
       }
     }
     // The groups, plain or not: each holds exactly the edges to one point.
-    std::map<vtkIdType, std::multiset<std::tuple<vtkIdType, vtkIdType, int>>> expected, found;
-    for (vtkIdType f = 0; f < n; ++f)
-    {
-      const auto& polygon = polys[static_cast<std::size_t>(f)];
-      const auto m = static_cast<vtkIdType>(polygon.size());
-      for (vtkIdType k = 0; k < m; ++k)
-      {
-        if (polygon[static_cast<std::size_t>(k)] != 0)
-        {
-          continue;
-        }
-        const vtkIdType after = polygon[static_cast<std::size_t>((k + 1) % m)];
-        const vtkIdType before = polygon[static_cast<std::size_t>((k + m - 1) % m)];
-        if (after != 0)
-        {
-          expected[after].insert({ f, k, 1 });
-        }
-        if (before != 0)
-        {
-          expected[before].insert({ f, (k + m - 1) % m, 0 });
-        }
-      }
-    }
-    fan.ForGroups(
-      [&](const phongvtk::PointFan::Group& group)
-      {
-        for (std::size_t j = 0; j < group.Size; ++j)
-        {
-          EXPECT_EQ(group[j].Q, group[0].Q);
-          found[group[j].Q].insert({ group[j].Polygon, group[j].Slot, group[j].Forward });
-        }
-      });
-    ASSERT_TRUE(found == expected) << "trial " << trial;
+    ASSERT_TRUE(GroupsOf(fan) == listed.Edges) << "trial " << trial;
   }
   // Both kinds, many times over.
   EXPECT_GT(plain, 500);
