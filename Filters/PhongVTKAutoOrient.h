@@ -307,7 +307,7 @@ AutoOrientReport AutoOrient(const T* points, vtkIdType numPolys, const Offsets* 
       return;
     }
     vtkSMPThreadLocal<std::vector<detail::PartSum>> local;
-    phongvtk::For(0, numPolys, numPolys,
+    phongvtk::For(0, numPolys, FluxWork * numPolys,
       [&](vtkIdType begin, vtkIdType end)
       {
         std::vector<detail::PartSum>& sums = local.Local();

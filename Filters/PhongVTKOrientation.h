@@ -73,32 +73,33 @@ Orientation ConsistentOrientation(vtkIdType numPolys, const Offsets* offsets,
   std::iota(parent.begin(), parent.end(), vtkIdType(0));
   std::vector<unsigned char> parity(static_cast<std::size_t>(numPolys), 0);   // to the parent
   std::vector<unsigned char> clashing(static_cast<std::size_t>(numPolys), 0); // roots only
-  // The root of f and f's parity to it, compressing the path.
+  // The root of f and f's parity to it, halving the path on the way (every node passed points
+  // to its grandparent, with its parity to it): one walk.
   auto find = [&](vtkIdType f, unsigned char& toRoot)
   {
-    vtkIdType root = f;
     unsigned char total = 0;
-    while (parent[static_cast<std::size_t>(root)] != root)
+    for (;;)
     {
-      total ^= parity[static_cast<std::size_t>(root)];
-      root = parent[static_cast<std::size_t>(root)];
+      const vtkIdType up = parent[static_cast<std::size_t>(f)];
+      if (up == f)
+      {
+        break;
+      }
+      const vtkIdType upper = parent[static_cast<std::size_t>(up)];
+      parity[static_cast<std::size_t>(f)] ^= parity[static_cast<std::size_t>(up)];
+      parent[static_cast<std::size_t>(f)] = upper;
+      total ^= parity[static_cast<std::size_t>(f)];
+      f = upper;
     }
     toRoot = total;
-    // Second walk: point every node at the root with its own parity to it.
-    while (parent[static_cast<std::size_t>(f)] != root)
-    {
-      const vtkIdType next = parent[static_cast<std::size_t>(f)];
-      const unsigned char own = parity[static_cast<std::size_t>(f)];
-      parent[static_cast<std::size_t>(f)] = root;
-      parity[static_cast<std::size_t>(f)] = total;
-      total ^= own;
-      f = next;
-    }
-    return root;
+    return f;
   };
   Orientation result;
   for (vtkIdType f = 0; f < numPolys; ++f)
   {
+    // f's root and parity, found once for all its edges and kept through its joins.
+    unsigned char pf;
+    vtkIdType rf = find(f, pf);
     for (auto k = static_cast<vtkIdType>(offsets[f]); k < static_cast<vtkIdType>(offsets[f + 1]);
          ++k)
     {
@@ -118,8 +119,7 @@ Orientation ConsistentOrientation(vtkIdType numPolys, const Offsets* offsets,
       }
       // Same direction: exactly one of the two must be reversed.
       const auto same = static_cast<unsigned char>(n & 1);
-      unsigned char pf, pg;
-      const vtkIdType rf = find(f, pf);
+      unsigned char pg;
       const vtkIdType rg = find(g, pg);
       if (rf == rg)
       {
@@ -135,6 +135,11 @@ Orientation ConsistentOrientation(vtkIdType numPolys, const Offsets* offsets,
       parent[static_cast<std::size_t>(high)] = low;
       parity[static_cast<std::size_t>(high)] = pf ^ pg ^ same;
       clashing[static_cast<std::size_t>(low)] |= clashing[static_cast<std::size_t>(high)];
+      if (high == rf) // f's root joined g's: f's parity to it through the old root
+      {
+        pf = static_cast<unsigned char>(pg ^ same);
+        rf = low;
+      }
     }
   }
   // Non-manifold traversal: components that meet only at non-manifold edges join, each pair
