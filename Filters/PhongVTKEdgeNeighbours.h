@@ -222,6 +222,8 @@ struct PointFanOf
 
   const Id* Faces = nullptr;
   std::size_t NumberOfFaces = 0;
+  std::vector<Edge> Edges; // the first NumberOfEdges are the fan's (ForGroups lists them)
+  std::size_t NumberOfEdges = 0;
 
   /// At most this many triangles make a plain fan.
   static constexpr std::size_t PlainMax = 16;
@@ -240,7 +242,6 @@ struct PointFanOf
     const Connectivity* conn, bool after)
   {
     this->Faces = DistinctSorted(cells, count, this->SortedFaces, this->NumberOfFaces);
-    this->P = p;
     this->Listed = false;
     this->Plain = !after && this->BuildPlain(p, offsets, conn);
     if (this->Plain)
@@ -304,7 +305,6 @@ struct PointFanOf
 
 private:
   std::vector<Id> SortedFaces;
-  vtkIdType P = -1;
   bool Listed = false; // a plain fan's edges and groups are listed
 
   /// A hash of a point id into [0, 64) (Fibonacci hashing: neighbouring ids land apart).
@@ -349,6 +349,10 @@ private:
       const unsigned k = at >> 1;
       const vtkIdType next = static_cast<vtkIdType>(ids[(0x021u >> (4 * k)) & 3]);
       const vtkIdType previous = static_cast<vtkIdType>(ids[(0x102u >> (4 * k)) & 3]);
+      if (next == previous)
+      {
+        return false; // a triangle (p, q, q): one polygon along p-q twice
+      }
       this->Next[i] = next;
       this->Previous[i] = previous;
       this->Corner[i] = static_cast<std::int32_t>(k);
@@ -366,10 +370,6 @@ private:
     {
       const unsigned h = Hash(this->Next[i]);
       const std::int32_t j = (previousHashes >> h & 1) ? previousAt[h] : -1;
-      if (j == static_cast<std::int32_t>(i) && this->Previous[i] == this->Next[i])
-      {
-        return false; // a triangle (p, q, q): one polygon along p-q twice
-      }
       this->Match[i] = j >= 0 && this->Previous[j] == this->Next[i] ? j : -1;
     }
     return true;
@@ -390,10 +390,6 @@ private:
         }
         if (this->Previous[j] == this->Next[i])
         {
-          if (j == i)
-          {
-            return false; // a triangle (p, q, q)
-          }
           this->Match[i] = j;
         }
       }
@@ -424,11 +420,6 @@ private:
     self->GroupEdges();
   }
 
-public:
-  std::vector<Edge> Edges; // the first NumberOfEdges are the fan's (ForGroups lists them)
-  std::size_t NumberOfEdges = 0;
-
-private:
   /// Appends an edge (there is room).
   void Add(vtkIdType q, vtkIdType f, vtkIdType slot, std::size_t face, std::int32_t forward)
   {
@@ -634,22 +625,23 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, Links& links, bool a
                     }
                   });
               }
-              atPoint(p, fan, local.Own);
-              continue;
             }
-            fan.ForGroups(
-              [&](const FanGroup& group)
-              {
-                // Each edge from its smaller point; counted without a branch on that.
-                const bool mine = group[0].Q > p;
-                local.Disagreeing += mine &
-                  (group.Manifold() ? group[0].Forward == group[1].Forward
-                                    : records.CountNonManifold && group.Size >= 2);
-                if (neighbours && mine)
+            else
+            {
+              fan.ForGroups(
+                [&](const FanGroup& group)
                 {
-                  RecordEdgeGroup(group, offsets, neighbours, pairs ? &local.Pairs : nullptr);
-                }
-              });
+                  // Each edge from its smaller point; counted without a branch on that.
+                  const bool mine = group[0].Q > p;
+                  local.Disagreeing += mine &
+                    (group.Manifold() ? group[0].Forward == group[1].Forward
+                                      : records.CountNonManifold && group.Size >= 2);
+                  if (neighbours && mine)
+                  {
+                    RecordEdgeGroup(group, offsets, neighbours, pairs ? &local.Pairs : nullptr);
+                  }
+                });
+            }
             atPoint(p, fan, local.Own);
           }
         });
