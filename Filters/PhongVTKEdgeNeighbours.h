@@ -492,21 +492,41 @@ private:
 using PointFan = PointFanOf<vtkIdType>;
 
 /**
- * Writes what a group of edges p-q (PointFan) says about the edge slots: for a manifold edge,
- * each polygon's slot holds the other (`2 g + s`); for a non-manifold one, with `pairs`, every
- * polygon around it paired with the smallest polygon's first edge.
+ * The neighbour across an edge slot (EdgeNeighbours): `2 g + s` for the polygon g across it, s 1
+ * when both run along the edge the same way; all bits set (NoNeighbour) where there is none. As
+ * vtkIdType, or as 32 bits (CompactNeighbour) for a mesh that fits compact links (every polygon
+ * id below 2^31): half the memory a pass over the neighbours reads.
  */
-template <class Offsets>
-inline void RecordEdgeGroup(const FanGroup& group, const Offsets* offsets, vtkIdType* neighbours,
-  std::vector<NonManifoldPair>* pairs)
+using CompactNeighbour = std::uint32_t;
+template <class N>
+constexpr N NoNeighbour = static_cast<N>(-1);
+static_assert(NoNeighbour<vtkIdType> == -1, "the wide neighbours' empty slot is -1");
+
+/// The neighbour slot of g (`same` when both polygons run along the edge the same way).
+template <class N>
+inline N NeighbourSlot(vtkIdType g, vtkIdType same)
+{
+  return static_cast<N>(2 * g + same);
+}
+
+/**
+ * Writes what a group of edges p-q (PointFan) says about the edge slots: for a manifold edge,
+ * each polygon's slot holds the other (NeighbourSlot); for a non-manifold one, with `pairs`,
+ * every polygon around it paired with the smallest polygon's first edge.
+ */
+template <class Offsets, class N>
+inline void RecordEdgeGroup(
+  const FanGroup& group, const Offsets* offsets, N* neighbours, std::vector<NonManifoldPair>* pairs)
 {
   if (group.Manifold())
   {
     const FanEdge& a = group[0];
     const FanEdge& b = group[1];
     const vtkIdType same = a.Forward == b.Forward ? 1 : 0;
-    neighbours[static_cast<vtkIdType>(offsets[a.Polygon]) + a.Slot] = 2 * b.Polygon + same;
-    neighbours[static_cast<vtkIdType>(offsets[b.Polygon]) + b.Slot] = 2 * a.Polygon + same;
+    neighbours[static_cast<vtkIdType>(offsets[a.Polygon]) + a.Slot] =
+      NeighbourSlot<N>(b.Polygon, same);
+    neighbours[static_cast<vtkIdType>(offsets[b.Polygon]) + b.Slot] =
+      NeighbourSlot<N>(a.Polygon, same);
   }
   else if (pairs && group.Size >= 2)
   {
@@ -529,22 +549,24 @@ inline void RecordEdgeGroup(const FanGroup& group, const Offsets* offsets, vtkId
 
 /**
  * What a pass over the fans (ForPointFans) writes about the edges. With `Neighbours` (as many as
- * the connectivity, filled with -1), the neighbour across every edge slot; with `NonManifold` as
- * well, every polygon around each non-manifold edge paired with the smallest one around it,
- * sorted by slot. Always `Disagreeing`: the number of edges Consistency would act on, the
- * manifold edges along which both polygons run the same way and, with `CountNonManifold`, the
+ * the connectivity, filled with NoNeighbour), the neighbour across every edge slot; with
+ * `NonManifold` as well, every polygon around each non-manifold edge paired with the smallest one
+ * around it, sorted by slot. Always `Disagreeing`: the number of edges Consistency would act on,
+ * the manifold edges along which both polygons run the same way and, with `CountNonManifold`, the
  * non-manifold edges. None: the polygons agree already, and Consistency has nothing to do. With
  * `StopAtDisagreeing`, the pass ends soon after the first such edge (Disagreeing then counts
  * some of them, at least one).
  */
-struct EdgeRecords
+template <class N>
+struct EdgeRecordsOf
 {
-  vtkIdType* Neighbours = nullptr;
+  N* Neighbours = nullptr;
   std::vector<NonManifoldPair>* NonManifold = nullptr;
   bool CountNonManifold = false;
   bool StopAtDisagreeing = false;
   vtkIdType Disagreeing = 0;
 };
+using EdgeRecords = EdgeRecordsOf<vtkIdType>;
 
 /// How many points ahead ForPointFans asks for the data of the polygons around a point.
 constexpr vtkIdType FanLookAhead = 8;
@@ -555,9 +577,9 @@ constexpr vtkIdType FanLookAhead = 8;
  * own `Local` (default-constructed, kept from point to point), from several threads, each point
  * on its own; first, each edge from its smaller point, what `records` asks for (EdgeRecords).
  */
-template <class Local, class Links, class AtPoint, class AheadFn>
+template <class Local, class Links, class N, class AtPoint, class AheadFn>
 void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, Links& links, bool after,
-  EdgeRecords& records, const AtPoint& atPoint, const AheadFn& ahead)
+  EdgeRecordsOf<N>& records, const AtPoint& atPoint, const AheadFn& ahead)
 {
   struct Scratch
   {
@@ -567,7 +589,7 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, Links& links, bool a
     Local Own;
   };
   vtkSMPThreadLocal<Scratch> scratch;
-  vtkIdType* neighbours = records.Neighbours;
+  N* neighbours = records.Neighbours;
   const bool pairs = neighbours && records.NonManifold;
   std::atomic<bool> stop(false);
   polys->Visit(RawCells{},
@@ -619,9 +641,10 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, Links& links, bool a
                     {
                       const vtkIdType fi = fan.Faces[i], fj = fan.Faces[j];
                       const std::int32_t kj = fan.Corner[j];
-                      neighbours[static_cast<vtkIdType>(offsets[fi]) + fan.Corner[i]] = 2 * fj;
+                      neighbours[static_cast<vtkIdType>(offsets[fi]) + fan.Corner[i]] =
+                        NeighbourSlot<N>(fj, 0);
                       neighbours[static_cast<vtkIdType>(offsets[fj]) + (kj == 0 ? 2 : kj - 1)] =
-                        2 * fi;
+                        NeighbourSlot<N>(fi, 0);
                     }
                   });
               }
@@ -667,8 +690,8 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, Links& links, bool a
  * What `records` asks for about the edges of `polys` (valid point ids, `links` theirs), from a
  * pass over the fans that does nothing else (each edge from its smaller point).
  */
-template <class Links>
-void RecordEdges(vtkIdType numPoints, vtkCellArray* polys, Links& links, EdgeRecords& records)
+template <class Links, class N>
+void RecordEdges(vtkIdType numPoints, vtkCellArray* polys, Links& links, EdgeRecordsOf<N>& records)
 {
   struct Nothing
   {
@@ -679,17 +702,18 @@ void RecordEdges(vtkIdType numPoints, vtkCellArray* polys, Links& links, EdgeRec
 }
 
 /**
- * The neighbour across every edge slot of `polys` (valid point ids, `links` theirs); with
- * `nonManifold`, also every polygon around each non-manifold edge paired with the smallest one
- * around it, sorted by slot.
+ * The neighbour across every edge slot of `polys` (valid point ids, `links` theirs) as N
+ * (NeighbourSlot; CompactNeighbour only where the mesh fits compact links); with `nonManifold`,
+ * also every polygon around each non-manifold edge paired with the smallest one around it,
+ * sorted by slot.
  */
-template <class Links>
-std::vector<vtkIdType> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* polys, Links& links,
+template <class N = vtkIdType, class Links>
+std::vector<N> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* polys, Links& links,
   std::vector<NonManifoldPair>* nonManifold = nullptr)
 {
-  std::vector<vtkIdType> neighbours(
-    static_cast<std::size_t>(polys->GetConnectivityArray()->GetNumberOfValues()), -1);
-  EdgeRecords records;
+  std::vector<N> neighbours(
+    static_cast<std::size_t>(polys->GetConnectivityArray()->GetNumberOfValues()), NoNeighbour<N>);
+  EdgeRecordsOf<N> records;
   records.Neighbours = neighbours.data();
   records.NonManifold = nonManifold;
   RecordEdges(numPoints, polys, links, records);

@@ -62,15 +62,17 @@ struct Orientation
  * whether it is reversed. An edge between two polygons already in one set whose parities
  * disagree is where a non-orientable component cannot agree. With `nonManifold` (EdgeNeighbours'
  * pairs), components are then joined across non-manifold edges, in slot order; with
- * `components`, the components and open slots are listed as well.
+ * `components`, the components and open slots are listed as well. The neighbours are taken by
+ * value: a caller done with them moves them in, and their memory goes before the answers'.
  */
-template <class Offsets>
+template <class Offsets, class N>
 Orientation ConsistentOrientation(vtkIdType numPolys, const Offsets* offsets,
-  const std::vector<vtkIdType>& neighbours,
-  const std::vector<NonManifoldPair>* nonManifold = nullptr, bool components = false)
+  std::vector<N> neighbours, const std::vector<NonManifoldPair>* nonManifold = nullptr,
+  bool components = false)
 {
-  std::vector<vtkIdType> parent(static_cast<std::size_t>(numPolys));
-  std::iota(parent.begin(), parent.end(), vtkIdType(0));
+  // Polygon ids as the neighbours hold them (32 bits where they fit).
+  std::vector<N> parent(static_cast<std::size_t>(numPolys));
+  std::iota(parent.begin(), parent.end(), N(0));
   std::vector<unsigned char> parity(static_cast<std::size_t>(numPolys), 0);   // to the parent
   std::vector<unsigned char> clashing(static_cast<std::size_t>(numPolys), 0); // roots only
   // The root of f and f's parity to it, halving the path on the way (every node passed points
@@ -87,7 +89,7 @@ Orientation ConsistentOrientation(vtkIdType numPolys, const Offsets* offsets,
       }
       const vtkIdType upper = parent[static_cast<std::size_t>(up)];
       parity[static_cast<std::size_t>(f)] ^= parity[static_cast<std::size_t>(up)];
-      parent[static_cast<std::size_t>(f)] = upper;
+      parent[static_cast<std::size_t>(f)] = static_cast<N>(upper);
       total ^= parity[static_cast<std::size_t>(f)];
       f = upper;
     }
@@ -103,9 +105,9 @@ Orientation ConsistentOrientation(vtkIdType numPolys, const Offsets* offsets,
     for (auto k = static_cast<vtkIdType>(offsets[f]); k < static_cast<vtkIdType>(offsets[f + 1]);
          ++k)
     {
-      const vtkIdType n = neighbours[static_cast<std::size_t>(k)];
-      const vtkIdType g = n >> 1;
-      if (n < 0)
+      const N n = neighbours[static_cast<std::size_t>(k)];
+      const auto g = static_cast<vtkIdType>(n >> 1);
+      if (n == NoNeighbour<N>)
       {
         if (components)
         {
@@ -132,7 +134,7 @@ Orientation ConsistentOrientation(vtkIdType numPolys, const Offsets* offsets,
         continue;
       }
       const vtkIdType low = std::min(rf, rg), high = std::max(rf, rg);
-      parent[static_cast<std::size_t>(high)] = low;
+      parent[static_cast<std::size_t>(high)] = static_cast<N>(low);
       parity[static_cast<std::size_t>(high)] = pf ^ pg ^ same;
       clashing[static_cast<std::size_t>(low)] |= clashing[static_cast<std::size_t>(high)];
       if (high == rf) // f's root joined g's: f's parity to it through the old root
@@ -155,13 +157,16 @@ Orientation ConsistentOrientation(vtkIdType numPolys, const Offsets* offsets,
       if (rf != rg)
       {
         const vtkIdType low = std::min(rf, rg), high = std::max(rf, rg);
-        parent[static_cast<std::size_t>(high)] = low;
+        parent[static_cast<std::size_t>(high)] = static_cast<N>(low);
         parity[static_cast<std::size_t>(high)] =
           static_cast<unsigned char>(pf ^ pg ^ static_cast<unsigned char>(pair.Same));
         clashing[static_cast<std::size_t>(low)] |= clashing[static_cast<std::size_t>(high)];
       }
     }
   }
+  // The neighbours have served (moved in, they go here): their memory is handed back before
+  // the answers per polygon take theirs.
+  std::vector<N>().swap(neighbours);
   result.Reverse.resize(static_cast<std::size_t>(numPolys));
   if (components)
   {

@@ -282,9 +282,10 @@ struct RegionLabels
  * are taken in parallel, each on its own: the same result for any number of threads. The fans
  * give what `records` asks for about the edges on the way (EdgeRecords).
  */
-template <class Links, class DirectedFn, class SmoothFn, class AheadFn>
+template <class Links, class N, class DirectedFn, class SmoothFn, class AheadFn>
 RegionLabels SharpEdgeRegions(vtkIdType numPoints, vtkCellArray* polys, Links& links,
-  EdgeRecords& records, const DirectedFn& directed, const SmoothFn& smooth, const AheadFn& ahead)
+  EdgeRecordsOf<N>& records, const DirectedFn& directed, const SmoothFn& smooth,
+  const AheadFn& ahead)
 {
   RegionLabels labels;
   // Not zero-filled: written only for the points with copies, read only for them.

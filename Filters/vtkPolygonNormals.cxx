@@ -515,7 +515,8 @@ struct Adjacency
   bool WantNeighbours = false;  // Consistency or AutoOrientNormals
   bool WantComponents = false;  // AutoOrientNormals: the neighbours even where all agree
   bool WantNonManifold = false; // and NonManifoldTraversal: the pairs across non-manifold edges
-  std::vector<vtkIdType> Neighbours;
+  std::vector<phongvtk::CompactNeighbour> CompactNeighbours; // with CompactLinks
+  std::vector<vtkIdType> Neighbours;                         // with Links
   std::vector<phongvtk::NonManifoldPair> NonManifold;
   bool NeighboursBuilt = false;
   /// Consistency without AutoOrientNormals, and a pass over the fans found every manifold edge's
@@ -537,41 +538,50 @@ struct Adjacency
   template <class Fn>
   void WithLinks(Fn&& fn)
   {
+    this->WithLinksAndNeighbours([&](auto& links, auto&) { fn(links); });
+  }
+
+  /// fn(links, neighbours): the neighbours as wide as the links' ids.
+  template <class Fn>
+  void WithLinksAndNeighbours(Fn&& fn)
+  {
     if (this->Compact)
     {
-      fn(this->CompactLinks);
+      fn(this->CompactLinks, this->CompactNeighbours);
     }
     else
     {
-      fn(this->Links);
+      fn(this->Links, this->Neighbours);
     }
   }
 
   /**
-   * What a pass over the fans is to record (EdgeRecords). The neighbours' memory (every slot -1)
-   * only for AutoOrientNormals: Consistency first asks whether the polygons agree already (most
-   * meshes' do), which spares it; where they do not, BuildNeighbours walks the fans again.
+   * What a pass over the fans is to record (EdgeRecords) in `neighbours` (WithLinksAndNeighbours).
+   * The neighbours' memory (every slot empty) only for AutoOrientNormals: Consistency first asks
+   * whether the polygons agree already (most meshes' do), which spares it; where they do not,
+   * BuildNeighbours walks the fans again.
    */
-  phongvtk::EdgeRecords RecordsToFill(vtkPolyData* mesh)
+  template <class N>
+  phongvtk::EdgeRecordsOf<N> RecordsToFill(vtkPolyData* mesh, std::vector<N>& neighbours)
   {
-    phongvtk::EdgeRecords records;
+    phongvtk::EdgeRecordsOf<N> records;
     records.CountNonManifold = this->WantNonManifold;
     if (this->WantComponents)
     {
-      this->Neighbours.assign(
+      neighbours.assign(
         static_cast<std::size_t>(mesh->GetPolys()->GetConnectivityArray()->GetNumberOfValues()),
-        -1);
+        phongvtk::NoNeighbour<N>);
       this->NeighboursBuilt = true;
-      records.Neighbours = this->Neighbours.data();
+      records.Neighbours = neighbours.data();
       records.NonManifold = this->WantNonManifold ? &this->NonManifold : nullptr;
     }
     return records;
   }
 
-  /// Keeps what the pass over the fans found (RecordsToFill).
-  void Recorded(const phongvtk::EdgeRecords& records)
+  /// Keeps what the pass over the fans found (RecordsToFill): `disagreeing` edges.
+  void Recorded(vtkIdType disagreeing)
   {
-    this->Agreeing = this->WantNeighbours && !this->WantComponents && records.Disagreeing == 0;
+    this->Agreeing = this->WantNeighbours && !this->WantComponents && disagreeing == 0;
   }
 
   /**
@@ -592,7 +602,7 @@ struct Adjacency
     records.StopAtDisagreeing = true;
     this->WithLinks([&](auto& links)
       { phongvtk::RecordEdges(mesh->GetNumberOfPoints(), mesh->GetPolys(), links, records); });
-    this->Recorded(records);
+    this->Recorded(records.Disagreeing);
   }
 
   void BuildNeighbours(vtkPolyData* mesh)
@@ -600,10 +610,11 @@ struct Adjacency
     if (!this->NeighboursBuilt)
     {
       this->BuildLinks(mesh);
-      this->WithLinks(
-        [&](auto& links)
+      this->WithLinksAndNeighbours(
+        [&](auto& links, auto& neighbours)
         {
-          this->Neighbours = phongvtk::EdgeNeighbours(mesh->GetNumberOfPoints(), mesh->GetPolys(),
+          using N = typename std::decay_t<decltype(neighbours)>::value_type;
+          neighbours = phongvtk::EdgeNeighbours<N>(mesh->GetNumberOfPoints(), mesh->GetPolys(),
             links, this->WantNonManifold ? &this->NonManifold : nullptr);
         });
       this->NeighboursBuilt = true;
@@ -613,6 +624,7 @@ struct Adjacency
   /// Hands the neighbours' memory back once the polygons are ordered.
   void ReleaseNeighbours()
   {
+    std::vector<phongvtk::CompactNeighbour>().swap(this->CompactNeighbours);
     std::vector<vtkIdType>().swap(this->Neighbours);
     std::vector<phongvtk::NonManifoldPair>().swap(this->NonManifold);
   }
@@ -738,14 +750,15 @@ struct SharpEdges
     }
     const double c = this->Cosine();
     adjacency.BuildLinks(this->Input);
-    phongvtk::EdgeRecords records = adjacency.RecordsToFill(this->Input);
     vtkCellArray* polys = this->Input->GetPolys();
+    vtkIdType disagreeing = 0;
     polys->Visit(RawCells{},
       [&](const auto* offsets, const auto* conn)
       {
-        adjacency.WithLinks(
-          [&](auto& links)
+        adjacency.WithLinksAndNeighbours(
+          [&](auto& links, auto& neighbours)
           {
+            auto records = adjacency.RecordsToFill(this->Input, neighbours);
             this->Labels = phongvtk::SharpEdgeRegions(
               this->Input->GetNumberOfPoints(), polys, links, records,
               [&](vtkIdType f) { return this->Directed(f); },
@@ -757,9 +770,10 @@ struct SharpEdges
                 phongvtk::PrefetchRecord(normal, normal + 2);
                 phongvtk::PrefetchAddress(this->Status.get() + this->FirstPoly + f);
               });
+            disagreeing = records.Disagreeing;
           });
       });
-    adjacency.Recorded(records);
+    adjacency.Recorded(disagreeing);
     return true;
   }
 
@@ -878,9 +892,13 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
     polys->Visit(RawCells{},
       [&](const auto* offsets, const auto*)
       {
-        orientation = phongvtk::ConsistentOrientation(numPolys, offsets, adjacency.Neighbours,
-          adjacency.WantNonManifold ? &adjacency.NonManifold : nullptr,
-          self->GetAutoOrientNormals());
+        adjacency.WithLinksAndNeighbours(
+          [&](auto&, auto& neighbours)
+          {
+            orientation = phongvtk::ConsistentOrientation(numPolys, offsets, std::move(neighbours),
+              adjacency.WantNonManifold ? &adjacency.NonManifold : nullptr,
+              self->GetAutoOrientNormals());
+          });
       });
     adjacency.ReleaseNeighbours();
     clashes = orientation.Clashes;

@@ -614,6 +614,26 @@ TEST(OrientationKernel, ClashesAreThePolygonsOfTheDisagreeingPairsOnly)
   const std::vector<std::pair<vtkIdType, vtkIdType>> open = { { 0, 2 }, { 1, 5 }, { 2, 8 },
     { 3, 11 } };
   EXPECT_EQ(ec.OpenSlots, open);
+  // The same neighbours in 32 bits (compact links), the empty slot all ones: the same answers.
+  auto compact = [](const std::vector<vtkIdType>& wide)
+  {
+    std::vector<phongvtk::CompactNeighbour> c;
+    for (vtkIdType n : wide)
+    {
+      c.push_back(n < 0 ? 0xFFFFFFFFu : static_cast<phongvtk::CompactNeighbour>(n));
+    }
+    return c;
+  };
+  const phongvtk::Orientation oc32 =
+    phongvtk::ConsistentOrientation(3, offsets.data(), compact(odd), nullptr, true);
+  EXPECT_EQ(oc32.Reverse, oc.Reverse);
+  EXPECT_EQ(oc32.Clashes, (std::vector<vtkIdType>{ 1, 2 }));
+  EXPECT_EQ(oc32.ComponentClashes, oc.ComponentClashes);
+  const phongvtk::Orientation ec32 =
+    phongvtk::ConsistentOrientation(4, offsets4.data(), compact(even), nullptr, true);
+  EXPECT_EQ(ec32.Reverse, e.Reverse);
+  EXPECT_EQ(ec32.OpenSlots, open);
+  EXPECT_EQ(ec32.Component, ec.Component);
 }
 
 TEST(OrientationKernel, EdgeNeighboursOfAFanWithAFinAndABoundary)
@@ -634,6 +654,18 @@ TEST(OrientationKernel, EdgeNeighboursOfAFanWithAFinAndABoundary)
     -1, -1, -1, -1, -1, -1, -1, -1, -1 // the fin: nothing manifold
   };
   EXPECT_EQ(n, expected);
+  // With compact links, in 32 bits: the same slots, the empty ones all ones.
+  phongvtk::CompactPolygonLinks compactLinks;
+  phongvtk::BuildPolygonLinks(mesh->GetPoints(), mesh->GetPolys(), compactLinks);
+  const std::vector<phongvtk::CompactNeighbour> n32 =
+    phongvtk::EdgeNeighbours<phongvtk::CompactNeighbour>(9, mesh->GetPolys(), compactLinks);
+  ASSERT_EQ(n32.size(), expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k)
+  {
+    EXPECT_EQ(
+      n32[k], expected[k] < 0 ? 0xFFFFFFFFu : static_cast<phongvtk::CompactNeighbour>(expected[k]))
+      << "slot " << k;
+  }
   // The fin's pairs: polygon 3's edge 4-5 (slot 9) with 4 (running the other way) and 5 (the
   // same way).
   std::vector<phongvtk::NonManifoldPair> pairs;

@@ -603,16 +603,21 @@ TEST(SplittingRegions, CompactAndWideLinksGiveTheSameRegionsNeighboursAndPolygon
       const double d = vtkMath::Dot(&normals[3 * f], &normals[3 * g]);
       return (same ? -d : d) > std::cos(vtkMath::RadiansFromDegrees(30.0));
     };
-    auto regions = [&](auto& links, phongvtk::SplitPolygons& split, std::vector<vtkIdType>& copies,
-                     std::vector<std::int32_t>& labels, std::vector<vtkIdType>& neighbours)
+    // The neighbours are recorded as wide as the links' ids (32 bits with compact links) and
+    // compared as vtkIdType, the empty slot -1.
+    auto regions = [&](auto& links, auto neighbourType, phongvtk::SplitPolygons& split,
+                     std::vector<vtkIdType>& copies, std::vector<std::int32_t>& labels,
+                     std::vector<vtkIdType>& neighbours)
     {
+      using N = decltype(neighbourType);
       phongvtk::BuildPolygonLinks(mesh->GetPoints(), polys, links);
       // The neighbours as the pass over the fans records them on the way (each edge from its
       // smaller point, where the fan is plain from its own listing) must be those of a pass
       // that lists every fan's edges.
-      std::vector<vtkIdType> recorded(
-        static_cast<std::size_t>(polys->GetConnectivityArray()->GetNumberOfValues()), -1);
-      phongvtk::EdgeRecords records;
+      std::vector<N> recorded(
+        static_cast<std::size_t>(polys->GetConnectivityArray()->GetNumberOfValues()),
+        phongvtk::NoNeighbour<N>);
+      phongvtk::EdgeRecordsOf<N> records;
       records.Neighbours = recorded.data();
       phongvtk::RegionLabels found = phongvtk::SharpEdgeRegions(
         numPoints, polys, links, records, directed, smooth, [](vtkIdType) {});
@@ -627,16 +632,21 @@ TEST(SplittingRegions, CompactAndWideLinksGiveTheSameRegionsNeighboursAndPolygon
         }
       }
       split = phongvtk::ApplyRegions(numPoints, polys, links, found);
-      neighbours = phongvtk::EdgeNeighbours(numPoints, polys, links);
-      EXPECT_EQ(recorded, neighbours);
+      const std::vector<N> listed = phongvtk::EdgeNeighbours<N>(numPoints, polys, links);
+      EXPECT_EQ(recorded, listed);
+      neighbours.clear();
+      for (N n : listed)
+      {
+        neighbours.push_back(n == phongvtk::NoNeighbour<N> ? -1 : static_cast<vtkIdType>(n));
+      }
     };
     phongvtk::CompactPolygonLinks compact;
     phongvtk::PolygonLinks wide;
     phongvtk::SplitPolygons a, b;
     std::vector<vtkIdType> copiesA, copiesB, neighboursA, neighboursB;
     std::vector<std::int32_t> labelsA, labelsB;
-    regions(compact, a, copiesA, labelsA, neighboursA);
-    regions(wide, b, copiesB, labelsB, neighboursB);
+    regions(compact, phongvtk::CompactNeighbour{}, a, copiesA, labelsA, neighboursA);
+    regions(wide, vtkIdType{}, b, copiesB, labelsB, neighboursB);
     EXPECT_GT(std::accumulate(copiesA.begin(), copiesA.end(), vtkIdType(0)), 0)
       << "the test mesh must split somewhere";
     EXPECT_EQ(copiesA, copiesB);
