@@ -141,16 +141,64 @@ def explain_appended_data(path, error):
     ) from None
 
 
+#: Bytes of each PLY scalar type, under both of its names.
+PLY_TYPE_SIZES = {"char": 1, "uchar": 1, "short": 2, "ushort": 2, "int": 4, "uint": 4,
+                  "float": 4, "double": 8, "int8": 1, "uint8": 1, "int16": 2, "uint16": 2,
+                  "int32": 4, "uint32": 4, "float32": 4, "float64": 8}
+
+
+def ply_least_body(lines, binary, path):
+    """The fewest bytes the body of a PLY file with header `lines` can take: binary, every
+    scalar property's size and every list's count; ASCII, one character a value. Raises
+    CommandError on an element or property line that vtkPLYReader cannot take."""
+    least = 0
+    count = 0
+    for number, line in enumerate(lines, 1):
+        words = line.split()
+        if not words:
+            continue
+        if words[0] == b"end_header":
+            break
+        quoted = shown([word.decode(errors="replace") for word in words])
+        if words[0] == b"element":
+            if len(words) != 3 or not words[2].isdigit():
+                raise CommandError(f"'{path}' is not a valid PLY file: header line {number} "
+                                   f"should be 'element NAME COUNT', is '{quoted}'")
+            count = int(words[2])
+        elif words[0] == b"property":
+            is_list = len(words) == 5 and words[1] == b"list"
+            types = [word.decode(errors="replace") for word in
+                     (words[2:4] if is_list else words[1:2])]
+            if (len(words) != 3 and not is_list) or any(t not in PLY_TYPE_SIZES for t in types):
+                raise CommandError(f"'{path}' is not a valid PLY file: header line {number} "
+                                   f"is not a property VTK reads: '{quoted}'")
+            least += count * (PLY_TYPE_SIZES[types[0]] if binary else 1)
+    return least
+
+
 def check_ply_header(path):
     """Raises CommandError unless `path` starts like a PLY file ('ply', then 'format ...' and
-    'end_header' in the header): vtkPLYReader says "Could not open" for any bad header."""
+    'end_header' in the header; vtkPLYReader says "Could not open" for any bad header) and is
+    long enough for the elements its header declares: vtkPLYReader allocates what the header
+    says and reads on past the end of a file too short for it (a segmentation fault, or heap
+    corruption)."""
     with open(path, "rb") as file:
         head = file.read(1 << 16)
     lines = [line.strip() for line in head.split(b"\n")]
     if not lines or lines[0] != b"ply" or b"end_header" not in lines:
         raise CommandError(f"'{path}' is not a PLY file: no header 'ply' ... 'end_header'")
-    if not any(line.startswith(b"format ") for line in lines[:4]):
+    header = lines[: lines.index(b"end_header") + 1]
+    formats = [line.split() for line in header if line.startswith(b"format ")]
+    if not formats:
         raise CommandError(f"'{path}' is not a PLY file: no 'format' line in its header")
+    binary = formats[0][1:2] != [b"ascii"]
+    body_start = len(b"\n".join(head.split(b"\n")[: len(header)])) + 1
+    least = ply_least_body(header, binary, path)
+    body = os.path.getsize(path) - body_start
+    if body < least:
+        raise CommandError(f"'{path}' is not a valid PLY file: its header declares elements "
+                           f"that take at least {least} bytes, the file has {max(body, 0)} "
+                           "after its header")
 
 
 def check_stl_size(path):

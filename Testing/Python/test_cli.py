@@ -17,6 +17,7 @@ from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkIOLegacy import vtkPolyDataReader
+from vtkmodules.vtkIOPLY import vtkPLYWriter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 
 import phongvtk
@@ -697,6 +698,57 @@ def test_malformed_off_is_a_clean_error(phongvtk_cli, tmp_path):
     (tmp_path / "bad.off").write_text("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n")
     expect_clean_error(phongvtk_cli("render", "bad.off", "-o", "x.png"), "bad.off:6",
                        "vertex index 9")
+
+
+# --- PLY headers against the file's size ---------------------------------------------------
+# vtkPLYReader allocates what a header declares and reads on past the end of a shorter file: a
+# header of 10^11 vertices with no data was a segmentation fault, a binary file cut after its
+# header a heap corruption (free(): invalid pointer). The CLI checks the header first.
+
+PLY_HEADER_BINARY = (b"ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+                     b"property float x\nproperty float y\nproperty float z\nelement face 1\n"
+                     b"property list uchar int vertex_indices\nend_header\n")
+
+
+@pytest.mark.parametrize("content, words", [
+    (b"ply\nformat ascii 1.0\nelement vertex 99999999999\nproperty float x\n"
+     b"property float y\nproperty float z\nend_header\n", ["at least 299999999997 bytes", "has 0"]),
+    (PLY_HEADER_BINARY + bytes(20), ["at least 37 bytes", "has 20"]),
+    (PLY_HEADER_BINARY + bytes(36), ["at least 37 bytes", "has 36"]),
+    (PLY_HEADER_BINARY.replace(b"float z", b"float128 z") + bytes(64), ["line 6", "float128"]),
+    (PLY_HEADER_BINARY.replace(b"vertex 3", b"vertex -3"), ["line 3", "element NAME COUNT"]),
+])
+def test_ply_whose_header_the_file_cannot_hold_is_a_clean_error(phongvtk_cli, tmp_path, content,
+                                                                words):
+    (tmp_path / "bad.ply").write_bytes(content)
+    expect_clean_error(phongvtk_cli("normals", "bad.ply", "-o", "x.vtp"), "bad.ply", *words)
+    assert not (tmp_path / "x.vtp").exists()
+
+
+def test_ply_long_enough_for_its_header_is_read(phongvtk_cli, tmp_path):
+    # The least the header above allows: three vertices and a face of no points; with a comment
+    # and obj_info before 'format', as vtkPLYReader accepts; and a triangle on top.
+    header = PLY_HEADER_BINARY.replace(b"ply\n", b"ply\ncomment c\nobj_info o\n", 1)
+    vertices = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], dtype="<f4").tobytes()
+    triangle = bytes([3]) + np.array([0, 1, 2], dtype="<i4").tobytes()
+    (tmp_path / "tri.ply").write_bytes(header + vertices + triangle)
+    result = phongvtk_cli("normals", "tri.ply", "-o", "tri.vtp", "--precision", "double")
+    assert result.returncode == 0, result.stderr
+    normals = numpy_support.vtk_to_numpy(read_vtp(tmp_path / "tri.vtp").GetCellData().GetArray(
+        "Normals"))
+    assert normals.tolist() == [[0.0, 0.0, 1.0]]
+
+
+@pytest.mark.parametrize("binary", [False, True])
+def test_ply_written_by_vtk_is_read(phongvtk_cli, sphere_off, tmp_path, binary):
+    mesh = phongvtk_io.read_mesh(str(sphere_off))
+    writer = vtkPLYWriter()
+    writer.SetInputData(mesh)
+    writer.SetFileName(str(tmp_path / "sphere.ply"))
+    writer.SetFileType(2 if binary else 1)  # VTK_BINARY, VTK_ASCII
+    assert writer.Write() == 1
+    assert phongvtk_cli("normals", "sphere.ply", "-o", "s.vtp").returncode == 0
+    assert read_vtp(tmp_path / "s.vtp").GetNumberOfPolys() == len(uv_sphere()[1])
 
 
 # --- VTP files on every expat -----------------------------------------------------------------
