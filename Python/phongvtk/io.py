@@ -150,21 +150,29 @@ PLY_TYPE_SIZES = {"char": 1, "uchar": 1, "short": 2, "ushort": 2, "int": 4, "uin
 def ply_least_body(lines, binary, path):
     """The fewest bytes the body of a PLY file with header `lines` can take: binary, every
     scalar property's size and every list's count; ASCII, one character a value. Raises
-    CommandError on an element or property line that vtkPLYReader cannot take."""
+    CommandError on an element or property line that vtkPLYReader cannot take, and on elements
+    without properties (vtkPLYReader allocates them all, taking no bytes they fit any file)."""
     least = 0
     count = 0
+    element = None  # (line number, quoted line) of the element whose properties come next
+    properties = 0
     for number, line in enumerate(lines, 1):
         words = line.split()
         if not words:
             continue
+        quoted = shown([word.decode(errors="replace") for word in words])
+        if words[0] in (b"element", b"end_header") and element and count and not properties:
+            raise CommandError(f"'{path}' is not a valid PLY file: header line {element[0]} "
+                               f"declares elements without properties: '{element[1]}'")
         if words[0] == b"end_header":
             break
-        quoted = shown([word.decode(errors="replace") for word in words])
         if words[0] == b"element":
             if len(words) != 3 or not words[2].isdigit():
                 raise CommandError(f"'{path}' is not a valid PLY file: header line {number} "
                                    f"should be 'element NAME COUNT', is '{quoted}'")
             count = int(words[2])
+            element = (number, quoted)
+            properties = 0
         elif words[0] == b"property":
             is_list = len(words) == 5 and words[1] == b"list"
             types = [word.decode(errors="replace") for word in
@@ -173,6 +181,7 @@ def ply_least_body(lines, binary, path):
                 raise CommandError(f"'{path}' is not a valid PLY file: header line {number} "
                                    f"is not a property VTK reads: '{quoted}'")
             least += count * (PLY_TYPE_SIZES[types[0]] if binary else 1)
+            properties += 1
     return least
 
 

@@ -717,6 +717,13 @@ PLY_HEADER_BINARY = (b"ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
     (PLY_HEADER_BINARY + bytes(36), ["at least 37 bytes", "has 36"]),
     (PLY_HEADER_BINARY.replace(b"float z", b"float128 z") + bytes(64), ["line 6", "float128"]),
     (PLY_HEADER_BINARY.replace(b"vertex 3", b"vertex -3"), ["line 3", "element NAME COUNT"]),
+    # Elements without properties take no bytes: vtkPLYReader allocated 10^11 of them (SIGSEGV,
+    # or an abort for faces).
+    (b"ply\nformat ascii 1.0\nelement vertex 99999999999\nend_header\n",
+     ["line 3", "without properties"]),
+    (b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+     b"property float z\nelement face 99999999999\nend_header\n0 0 0\n1 0 0\n0 1 0\n",
+     ["line 7", "without properties", "face 99999999999"]),
 ])
 def test_ply_whose_header_the_file_cannot_hold_is_a_clean_error(phongvtk_cli, tmp_path, content,
                                                                 words):
