@@ -148,11 +148,13 @@ PLY_TYPE_SIZES = {"char": 1, "uchar": 1, "short": 2, "ushort": 2, "int": 4, "uin
 
 
 def ply_least_body(lines, binary, path):
-    """The fewest bytes the body of a PLY file with header `lines` can take: binary, every
-    scalar property's size and every list's count; ASCII, one character a value. Raises
+    """(the fewest bytes the body of a PLY file with header `lines` can take, its number of
+    elements): binary, every scalar property's size and every list's count; ASCII, one
+    character a value. Raises
     CommandError on an element or property line that vtkPLYReader cannot take, and on elements
     without properties (vtkPLYReader allocates them all, taking no bytes they fit any file)."""
     least = 0
+    elements = 0
     count = 0
     element = None  # (line number, quoted line) of the element whose properties come next
     properties = 0
@@ -171,6 +173,7 @@ def ply_least_body(lines, binary, path):
                 raise CommandError(f"'{path}' is not a valid PLY file: header line {number} "
                                    f"should be 'element NAME COUNT', is '{quoted}'")
             count = int(words[2])
+            elements += count
             element = (number, quoted)
             properties = 0
         elif words[0] == b"property":
@@ -182,15 +185,27 @@ def ply_least_body(lines, binary, path):
                                    f"is not a property VTK reads: '{quoted}'")
             least += count * (PLY_TYPE_SIZES[types[0]] if binary else 1)
             properties += 1
-    return least
+    return least, elements
+
+
+def lines_from(path, start):
+    """The lines of `path` from byte `start` on (a last line without its newline counts)."""
+    lines = 0
+    last = b"\n"
+    with open(path, "rb") as file:
+        file.seek(start)
+        while chunk := file.read(1 << 22):
+            lines += chunk.count(b"\n")
+            last = chunk[-1:]
+    return lines + (last != b"\n")
 
 
 def check_ply_header(path):
     """Raises CommandError unless `path` starts like a PLY file ('ply', then 'format ...' and
     'end_header' in the header; vtkPLYReader says "Could not open" for any bad header) and is
-    long enough for the elements its header declares: vtkPLYReader allocates what the header
-    says and reads on past the end of a file too short for it (a segmentation fault, or heap
-    corruption)."""
+    long enough for the elements its header declares (in ASCII, a line for each): vtkPLYReader
+    allocates what the header says and reads on past the end of a file too short for it (a
+    segmentation fault, heap corruption, or an assertion)."""
     with open(path, "rb") as file:
         head = file.read(1 << 16)
     lines = [line.strip() for line in head.split(b"\n")]
@@ -202,12 +217,18 @@ def check_ply_header(path):
         raise CommandError(f"'{path}' is not a PLY file: no 'format' line in its header")
     binary = formats[0][1:2] != [b"ascii"]
     body_start = len(b"\n".join(head.split(b"\n")[: len(header)])) + 1
-    least = ply_least_body(header, binary, path)
+    least, elements = ply_least_body(header, binary, path)
     body = os.path.getsize(path) - body_start
     if body < least:
         raise CommandError(f"'{path}' is not a valid PLY file: its header declares elements "
                            f"that take at least {least} bytes, the file has {max(body, 0)} "
                            "after its header")
+    # vtkPLYReader reads an ASCII element from a line of its own, and asserts past the last one.
+    lines = 0 if binary else lines_from(path, body_start)
+    if lines < elements and not binary:
+        raise CommandError(f"'{path}' is not a valid PLY file: its header declares {elements} "
+                           f"elements, a line each in ASCII; the file has {lines} lines after "
+                           "its header")
 
 
 def check_stl_size(path):
