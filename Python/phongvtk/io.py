@@ -150,9 +150,9 @@ PLY_TYPE_SIZES = {"char": 1, "uchar": 1, "short": 2, "ushort": 2, "int": 4, "uin
 def ply_least_body(lines, binary, path):
     """(the fewest bytes the body of a PLY file with header `lines` can take, its number of
     elements): binary, every scalar property's size and every list's count; ASCII, one
-    character a value. Raises
-    CommandError on an element or property line that vtkPLYReader cannot take, and on elements
-    without properties (vtkPLYReader allocates them all, taking no bytes they fit any file)."""
+    character a value. Raises CommandError on an element or property line that vtkPLYReader
+    cannot take, and on elements without properties (vtkPLYReader allocates them all, taking no
+    bytes they fit any file)."""
     least = 0
     elements = 0
     count = 0
@@ -208,7 +208,8 @@ def check_ply_header(path):
     segmentation fault, heap corruption, or an assertion)."""
     with open(path, "rb") as file:
         head = file.read(1 << 16)
-    lines = [line.strip() for line in head.split(b"\n")]
+    raw = head.split(b"\n")
+    lines = [line.strip() for line in raw]
     if not lines or lines[0] != b"ply" or b"end_header" not in lines:
         raise CommandError(f"'{path}' is not a PLY file: no header 'ply' ... 'end_header'")
     header = lines[: lines.index(b"end_header") + 1]
@@ -216,7 +217,7 @@ def check_ply_header(path):
     if not formats:
         raise CommandError(f"'{path}' is not a PLY file: no 'format' line in its header")
     binary = formats[0][1:2] != [b"ascii"]
-    body_start = len(b"\n".join(head.split(b"\n")[: len(header)])) + 1
+    body_start = sum(len(line) + 1 for line in raw[: len(header)])
     least, elements = ply_least_body(header, binary, path)
     body = os.path.getsize(path) - body_start
     if body < least:
@@ -224,11 +225,12 @@ def check_ply_header(path):
                            f"that take at least {least} bytes, the file has {max(body, 0)} "
                            "after its header")
     # vtkPLYReader reads an ASCII element from a line of its own, and asserts past the last one.
-    lines = 0 if binary else lines_from(path, body_start)
-    if lines < elements and not binary:
-        raise CommandError(f"'{path}' is not a valid PLY file: its header declares {elements} "
-                           f"elements, a line each in ASCII; the file has {lines} lines after "
-                           "its header")
+    if not binary:
+        body_lines = lines_from(path, body_start)
+        if body_lines < elements:
+            raise CommandError(f"'{path}' is not a valid PLY file: its header declares "
+                               f"{elements} elements, a line each in ASCII; the file has "
+                               f"{body_lines} lines after its header")
 
 
 def check_stl_size(path):
