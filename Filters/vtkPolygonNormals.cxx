@@ -9,6 +9,7 @@
 #include "PhongVTKParallel.h"
 #include "PhongVTKPointNormals.h"
 #include "PhongVTKSplitting.h"
+#include "PhongVTKWellFormedCells.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -1112,6 +1113,13 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
       vtkErrorMacro("Input has " << input->GetNumberOfCells() << " cells but no points.");
       output->Initialize();
     }
+    return 1;
+  }
+  const vtkIdType malformed = phongvtk::FirstMalformedCell(input);
+  if (malformed >= 0)
+  {
+    vtkErrorMacro("Cell " << malformed << phongvtk::MalformedCellReason);
+    output->Initialize();
     return 1;
   }
 

@@ -6,6 +6,7 @@
 #include "PhongVTKOptions.h"
 #include "PhongVTKParallel.h"
 #include "PhongVTKVisibleArea.h"
+#include "PhongVTKWellFormedCells.h"
 
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -404,6 +405,13 @@ int vtkVisibleArea::RequestData(vtkInformation* vtkNotUsed(request),
   if (!points && numCells > 0)
   {
     vtkErrorMacro("Input has " << numCells << " cells but no points.");
+    output->Initialize();
+    return 1;
+  }
+  const vtkIdType malformed = phongvtk::FirstMalformedCell(input);
+  if (malformed >= 0)
+  {
+    vtkErrorMacro("Cell " << malformed << phongvtk::MalformedCellReason);
     output->Initialize();
     return 1;
   }
