@@ -4,12 +4,13 @@
 
 Writes a small sphere (12 x 8 segments) in every format the CLI reads (PLY, STL and legacy VTK
 in ASCII and binary; VTP inline, ASCII and appended; OBJ; OFF), then for each: five truncations
-(2, 10, 30, 50, 90 %), eight mutations of 1, 4 or 16 random bytes, and 600 random bytes. Each
+(2, 10, 30, 50, 90 %), eight mutations of 1, 4 or 16 random bytes, and 600 random bytes; and
+the EDITS below (counts far beyond the file's size, types no reader knows): 173 files. Each
 file goes through `python3 -m phongvtk normals FILE -o OUT` under a 4 GiB address-space limit and
 a 60 s timeout. A clean outcome is exit 0, or exit 2 with `phongvtk: error: ...` as the last line
 of stderr; every other outcome (a signal, a traceback, a timeout) is listed. Exit status: 1 when
-any file was not clean, else 0. A measurement for issue 17 (hostile input), not yet a test: VTK's
-PLY and legacy VTK readers still abort on some of these files.
+any file was not clean, else 0. Run by Testing/Python/test_hostile_input.py (one seed); other
+seeds find other mutations.
 """
 import argparse
 import os
@@ -70,6 +71,48 @@ def valid_files(directory):
     return files
 
 
+#: Counts far beyond what a file holds, and types no reader knows, put into each kind of file:
+#: (file name, stem of the case, bytes replaced, replacement); every occurrence is replaced (an
+#: offset instead of bytes: the replacement is written there).
+EDITS = [
+    ("ascii.ply", "oversized", b"element vertex 74", b"element vertex 99999999999"),
+    ("binary.ply", "oversized", b"element face 144", b"element face 99999999999"),
+    ("binary.ply", "wrongtype", b"property float x", b"property float128 x"),
+    ("ascii.ply", "wrongtype", b"list uchar int", b"list uchar string"),
+    ("ascii.vtk", "oversized", b"POINTS 74", b"POINTS 99999999999"),
+    ("binary.vtk", "oversized", b"POLYGONS 145", b"POLYGONS 99999999999"),
+    ("binary.vtk", "wrongtype", b"POINTS 74 float", b"POINTS 74 quux"),
+    ("ascii.vtk", "wrongtype", b"vtktypeint64", b"vtktypeint128"),
+    ("inline.vtp", "oversized", b'NumberOfPoints="74"', b'NumberOfPoints="99999999999"'),
+    ("ascii.vtp", "oversized", b'NumberOfPolys="144"', b'NumberOfPolys="99999999999"'),
+    ("appended.vtp", "oversized", b'NumberOfPoints="74"', b'NumberOfPoints="4000000000"'),
+    ("inline.vtp", "wrongtype", b'type="Float32"', b'type="Float128"'),
+    ("ascii.vtp", "wrongtype", b'type="Int64"', b'type="Banana"'),
+    ("mesh.off", "oversized", b"\n74 144 0\n", b"\n74 99999999999 0\n"),
+    ("mesh.off", "wrongtype", b"\n3 ", b"\n3.5 "),
+    ("mesh.obj", "oversized", b"f 3 ", b"f 99999999999 "),
+    ("mesh.obj", "wrongtype", b"v ", b"v x"),
+    ("binary.stl", "oversized", 80, b"\xff\xff\xff\x7f"),  # the triangle count
+    ("ascii.stl", "wrongtype", b"vertex ", b"vertex x"),
+]
+
+
+def edited(files):
+    """[(file name, bytes)]: the EDITS made to the files (each must take)."""
+    cases = []
+    for name, stem, old, new in EDITS:
+        data = files[name]
+        if isinstance(old, int):
+            data = data[:old] + new + data[old + len(new):]
+        elif old in data:
+            data = data.replace(old, new)
+        else:
+            raise RuntimeError(f"{name} has no {old!r} to replace")
+        base, ext = os.path.splitext(name)
+        cases.append((f"{base}-{stem}{ext}", data))
+    return cases
+
+
 def malformed(files, rng):
     """[(file name, bytes)]: truncations, byte mutations and random bytes of every file."""
     cases = []
@@ -115,7 +158,8 @@ def main():
     with tempfile.TemporaryDirectory() as scratch:
         directory = args.keep or scratch
         os.makedirs(directory, exist_ok=True)
-        cases = malformed(valid_files(scratch), random.Random(args.seed))
+        files = valid_files(scratch)
+        cases = malformed(files, random.Random(args.seed)) + edited(files)
         failures = 0
         for name, data in cases:
             path = os.path.join(directory, name)

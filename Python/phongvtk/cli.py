@@ -10,6 +10,7 @@ import argparse
 import json
 import math
 import os
+import signal
 import sys
 
 import numpy as np
@@ -304,7 +305,7 @@ def say(args, text):
 
 def run_render(args, progress):
     """render: one image of the mesh."""
-    check_output(args.output, [".png"])
+    check_output(args.output, [".png"], args.mesh)
     mesh = read_mesh(args.mesh, progress)
     image = render_panels(mesh, [args.shading], scene_from(args), args.size, args.backend,
                           progress=progress)
@@ -317,7 +318,7 @@ def run_render(args, progress):
 
 def run_normals(args, progress):
     """normals: vtkPolygonNormals with the options, written to a mesh file."""
-    check_output(args.output, MESH_WRITERS)
+    check_output(args.output, MESH_WRITERS, args.mesh)
     mesh = read_mesh(args.mesh, progress)
     normals = phongvtk.vtkPolygonNormals()
     normals.SetInputData(mesh)
@@ -427,7 +428,7 @@ def format_area(report):
 def run_area(args, progress):
     """area: the visible area of the mesh toward a direction or a camera."""
     if args.output:
-        check_output(args.output, MESH_WRITERS)
+        check_output(args.output, MESH_WRITERS, args.mesh)
     mesh = read_mesh(args.mesh, progress)
     area, described = visible_area_filter(args, mesh)
     progress.run(area, "visible area", f"cannot compute the visible area of '{args.mesh}'")
@@ -566,7 +567,7 @@ def demo_rows(mesh, coarse_triangles, progress):
 def run_demo(args, progress):
     """demo: a real mesh and a torus, coarse and fine, flat, Gouraud and Phong; the normals
     ladder; the shading error against tessellation."""
-    check_output(args.output, [".png"])
+    check_output(args.output, [".png"], args.mesh)
     mesh, label = the_mesh(args, progress)
     rows = demo_rows(mesh, args.coarse, progress)
     scene = scene_from(args)
@@ -772,6 +773,9 @@ def main(argv=None):
     """Runs the command line `argv` (default sys.argv[1:]); returns the exit status."""
     args = build_parser().parse_args(argv)
     progress = Progress(quiet=args.quiet)
+    # A write past the file-size limit (ulimit -f) then fails with EFBIG, which the writers
+    # report, instead of killing the process with half a temporary file left behind.
+    signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
     try:
         use_threads(getattr(args, "threads", None))
         args.run(args, progress)

@@ -24,8 +24,10 @@ from vtkmodules.vtkIOLegacy import vtkPolyDataReader, vtkPolyDataWriter
 from vtkmodules.vtkIOPLY import vtkPLYReader, vtkPLYWriter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 
+from .counts import check_legacy_counts, check_vtp_counts
 from .errors import CommandError
-from .progress import Progress, vtk_output_captured
+from .ply import check_ply
+from .progress import Progress, native_lines_dropped, vtk_output_captured
 
 #: Extensions read by VTK's readers (lower case), and the reader of each.
 VTK_READERS = {
@@ -98,6 +100,7 @@ def read_mesh(path, progress=None):
             raise
         mesh = reader.GetOutput()
     check_surface(mesh, path)
+    check_cells(mesh, path)
     return mesh
 
 
@@ -141,98 +144,6 @@ def explain_appended_data(path, error):
     ) from None
 
 
-#: Bytes of each PLY scalar type, under both of its names.
-PLY_TYPE_SIZES = {"char": 1, "uchar": 1, "short": 2, "ushort": 2, "int": 4, "uint": 4,
-                  "float": 4, "double": 8, "int8": 1, "uint8": 1, "int16": 2, "uint16": 2,
-                  "int32": 4, "uint32": 4, "float32": 4, "float64": 8}
-
-
-def ply_least_body(lines, binary, path):
-    """(the fewest bytes the body of a PLY file with header `lines` can take, its number of
-    elements): binary, every scalar property's size and every list's count; ASCII, one
-    character a value. Raises CommandError on an element or property line that vtkPLYReader
-    cannot take, and on elements without properties (vtkPLYReader allocates them all, taking no
-    bytes they fit any file)."""
-    least = 0
-    elements = 0
-    count = 0
-    element = None  # (line number, quoted line) of the element whose properties come next
-    properties = 0
-    for number, line in enumerate(lines, 1):
-        words = line.split()
-        if not words:
-            continue
-        quoted = shown([word.decode(errors="replace") for word in words])
-        if words[0] in (b"element", b"end_header") and element and count and not properties:
-            raise CommandError(f"'{path}' is not a valid PLY file: header line {element[0]} "
-                               f"declares elements without properties: '{element[1]}'")
-        if words[0] == b"end_header":
-            break
-        if words[0] == b"element":
-            if len(words) != 3 or not words[2].isdigit():
-                raise CommandError(f"'{path}' is not a valid PLY file: header line {number} "
-                                   f"should be 'element NAME COUNT', is '{quoted}'")
-            count = int(words[2])
-            elements += count
-            element = (number, quoted)
-            properties = 0
-        elif words[0] == b"property":
-            is_list = len(words) == 5 and words[1] == b"list"
-            types = [word.decode(errors="replace") for word in
-                     (words[2:4] if is_list else words[1:2])]
-            if (len(words) != 3 and not is_list) or any(t not in PLY_TYPE_SIZES for t in types):
-                raise CommandError(f"'{path}' is not a valid PLY file: header line {number} "
-                                   f"is not a property VTK reads: '{quoted}'")
-            least += count * (PLY_TYPE_SIZES[types[0]] if binary else 1)
-            properties += 1
-    return least, elements
-
-
-def lines_from(path, start):
-    """The lines of `path` from byte `start` on (a last line without its newline counts)."""
-    lines = 0
-    last = b"\n"
-    with open(path, "rb") as file:
-        file.seek(start)
-        while chunk := file.read(1 << 22):
-            lines += chunk.count(b"\n")
-            last = chunk[-1:]
-    return lines + (last != b"\n")
-
-
-def check_ply_header(path):
-    """Raises CommandError unless `path` starts like a PLY file ('ply', then 'format ...' and
-    'end_header' in the header; vtkPLYReader says "Could not open" for any bad header) and is
-    long enough for the elements its header declares (in ASCII, a line for each): vtkPLYReader
-    allocates what the header says and reads on past the end of a file too short for it (a
-    segmentation fault, heap corruption, or an assertion)."""
-    with open(path, "rb") as file:
-        head = file.read(1 << 16)
-    raw = head.split(b"\n")
-    lines = [line.strip() for line in raw]
-    if not lines or lines[0] != b"ply" or b"end_header" not in lines:
-        raise CommandError(f"'{path}' is not a PLY file: no header 'ply' ... 'end_header'")
-    header = lines[: lines.index(b"end_header") + 1]
-    formats = [line.split() for line in header if line.startswith(b"format ")]
-    if not formats:
-        raise CommandError(f"'{path}' is not a PLY file: no 'format' line in its header")
-    binary = formats[0][1:2] != [b"ascii"]
-    body_start = sum(len(line) + 1 for line in raw[: len(header)])
-    least, elements = ply_least_body(header, binary, path)
-    body = os.path.getsize(path) - body_start
-    if body < least:
-        raise CommandError(f"'{path}' is not a valid PLY file: its header declares elements "
-                           f"that take at least {least} bytes, the file has {max(body, 0)} "
-                           "after its header")
-    # vtkPLYReader reads an ASCII element from a line of its own, and asserts past the last one.
-    if not binary:
-        body_lines = lines_from(path, body_start)
-        if body_lines < elements:
-            raise CommandError(f"'{path}' is not a valid PLY file: its header declares "
-                               f"{elements} elements, a line each in ASCII; the file has "
-                               f"{body_lines} lines after its header")
-
-
 def check_stl_size(path):
     """Raises CommandError when `path` would be read as binary STL (VTK's test: a byte above 127
     in the first 256) but is not 80 + 4 + 50 n bytes long for its n triangles: vtkSTLReader
@@ -249,12 +160,14 @@ def check_stl_size(path):
 
 
 #: Checks of a file before VTK's reader sees it, by extension.
-SNIFFERS = {".ply": check_ply_header, ".stl": check_stl_size}
+SNIFFERS = {".ply": check_ply, ".stl": check_stl_size, ".vtk": check_legacy_counts,
+            ".vtp": check_vtp_counts}
 
 
-def check_output(path, extensions):
+def check_output(path, extensions, source=None):
     """Raises CommandError unless `path` ends with one of `extensions` and names a file that can
-    be made (checked before any work, so that a typo does not cost a long computation)."""
+    be made (checked before any work, so that a typo does not cost a long computation), and is
+    not the file `source` the command reads (under any name: a symbolic or hard link too)."""
     if extension(path) not in extensions:
         raise CommandError(f"'{path}': cannot write '{extension(path) or '(none)'}' files "
                            f"(known: {' '.join(extensions)})")
@@ -263,6 +176,10 @@ def check_output(path, extensions):
         raise CommandError(f"cannot write '{path}': it is a directory")
     if not os.path.isdir(os.path.dirname(target)):
         raise CommandError(f"cannot write '{path}': no such directory")
+    with contextlib.suppress(OSError):  # either missing: they cannot be one file
+        if source is not None and os.path.samefile(source, path):
+            raise CommandError(f"will not write '{path}': it is the input file '{source}' "
+                               "(write to another file)")
 
 
 def check_surface(mesh, path):
@@ -280,6 +197,36 @@ def check_surface(mesh, path):
     ]
     holds = ", ".join(parts) if parts else "nothing"
     raise CommandError(f"'{path}' is not a surface: it holds {holds}, no polygons or strips")
+
+
+#: vtkPolyData's cell arrays in its cell order, with the noun of one of their cells.
+CELL_ARRAYS = (("GetVerts", "vertex cell"), ("GetLines", "line"), ("GetPolys", "polygon"),
+               ("GetStrips", "triangle strip"))
+
+
+def check_cells(mesh, path):
+    """Raises CommandError when a cell array of `mesh` (read from `path`) does not describe its
+    cells (offsets that do not start at 0, decrease, or do not end at the connectivity's
+    length) or a cell refers to a point the mesh does not have: what VTK's legacy and XML
+    readers build from a corrupt file without a word."""
+    points = mesh.GetNumberOfPoints()
+    for getter, noun in CELL_ARRAYS:
+        cells = getattr(mesh, getter)()
+        if cells is None or cells.GetNumberOfCells() == 0:
+            continue
+        offsets = numpy_support.vtk_to_numpy(cells.GetOffsetsArray())
+        ids = numpy_support.vtk_to_numpy(cells.GetConnectivityArray())
+        backwards = np.flatnonzero(offsets[1:] < offsets[:-1])
+        if offsets[0] != 0 or backwards.size or offsets[-1] != len(ids):
+            cell = 0 if offsets[0] != 0 else int(backwards[0]) if backwards.size else len(
+                offsets) - 2
+            raise CommandError(f"'{path}' is corrupt: its {noun}s' offsets do not describe "
+                               f"them (from {noun} {cell} on)")
+        outside = np.flatnonzero((ids < 0) | (ids >= points))
+        if outside.size:
+            cell = int(np.searchsorted(offsets, outside[0], side="right")) - 1
+            raise CommandError(f"'{path}' is corrupt: {noun} {cell} refers to point "
+                               f"{ids[outside[0]]}; the mesh has {points} points")
 
 
 # --- OFF ------------------------------------------------------------------------------------
@@ -435,8 +382,10 @@ def write_atomically(writer, path, progress):
     target = os.path.realpath(path)
     directory = os.path.dirname(target)
     try:
+        # Ending in the target's extension: vtkPLYWriter appends '.ply' to a name without it
+        # (and the file made here would have been renamed empty into place).
         handle, partial = tempfile.mkstemp(dir=directory, prefix=f".{os.path.basename(target)}.",
-                                           suffix=".part")
+                                           suffix=f".part{extension(target)}")
         os.close(handle)
     except OSError as error:
         raise CommandError(f"cannot write '{path}': {error.strerror}") from None
@@ -447,6 +396,16 @@ def write_atomically(writer, path, progress):
         # Some writers (vtkPNGWriter) report a file they cannot write through the error code.
         if hasattr(writer, "GetErrorCode") and writer.GetErrorCode():
             raise CommandError(what)
+        if os.path.getsize(partial) == 0:  # no format here is empty: the writer wrote elsewhere
+            raise CommandError(f"{what}: {type(writer).__name__} wrote nothing")
+        if extension(target) == ".ply":
+            # vtkPLYWriter ignores failed writes (a full disk, ulimit -f): what it wrote must
+            # hold what its header declares.
+            try:
+                check_ply(partial)
+            except CommandError:
+                raise CommandError(f"{what}: vtkPLYWriter could not write all of it (is the "
+                                   "disk full, or a file size limit set?)") from None
         with open(partial, "rb") as file:
             os.fsync(file.fileno())
         os.chmod(partial, usual_mode(target))
@@ -499,7 +458,8 @@ def write_png(image, path, progress=None):
     writer = vtkPNGWriter()
     writer.SetCompressionLevel(9)  # smallest files; images here are small, so it costs little
     writer.SetInputData(image)
-    write_atomically(writer, path, progress)
+    with native_lines_dropped(("libpng warning:", "libpng error:")):
+        write_atomically(writer, path, progress)
 
 
 # --- data nobody here wrote -----------------------------------------------------------------

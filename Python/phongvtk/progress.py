@@ -11,8 +11,10 @@ algorithm's message when the execution failed.
 """
 
 import contextlib
+import os
 import re
 import sys
+import tempfile
 
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.vtkConstants import VTK_STRING
@@ -104,6 +106,29 @@ def vtk_output_captured():
     finally:
         vtkLogger.SetStderrVerbosity(cutoff)
         vtkOutputWindow.SetInstance(previous)
+
+
+@contextlib.contextmanager
+def native_lines_dropped(prefixes):
+    """Within the block, lines that native libraries write straight to the process's standard
+    error (file descriptor 2) and that start with one of `prefixes` are dropped (libpng's
+    "libpng error: Write Error", which the writer reports again); other lines written there go
+    on to it when the block ends."""
+    sys.stderr.flush()
+    saved = os.dup(2)
+    with tempfile.TemporaryFile() as sink:
+        os.dup2(sink.fileno(), 2)
+        try:
+            yield
+        finally:
+            sys.stderr.flush()
+            os.dup2(saved, 2)
+            os.close(saved)
+            sink.seek(0)
+            for line in sink.read().decode(errors="replace").splitlines(keepends=True):
+                if not line.startswith(prefixes):
+                    sys.stderr.write(line)
+            sys.stderr.flush()
 
 
 class Progress:
