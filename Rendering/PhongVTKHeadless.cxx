@@ -374,19 +374,31 @@ namespace
 // context: destroying it while it is current on another thread would leave that thread pointing
 // at freed memory (its next OpenGL or OSMesa call crashes). Such a context is orphaned instead
 // and destroyed when its thread releases it (next MakeCurrent, ReleaseCurrent or thread end).
-std::mutex BindingMutex;
-std::map<osmesa_context*, std::thread::id> BoundOn;
-std::set<osmesa_context*> Orphans;
-// Each context's window-system framebuffer: 1 x 1 RGBA, never drawn into (VTK renders into
-// framebuffer objects), yet written when a context is released. It lives as long as the context,
-// which may outlive its window (an orphan).
-std::map<osmesa_context*, std::unique_ptr<unsigned char[]>> ClientBuffers;
+struct Bindings
+{
+  std::mutex Mutex;
+  std::map<osmesa_context*, std::thread::id> BoundOn;
+  std::set<osmesa_context*> Orphans;
+  // Each context's window-system framebuffer: 1 x 1 RGBA, never drawn into (VTK renders into
+  // framebuffer objects), yet written when a context is released. It lives as long as the
+  // context, which may outlive its window (an orphan).
+  std::map<osmesa_context*, std::unique_ptr<unsigned char[]>> ClientBuffers;
+};
+
+// Made once and never destroyed: a window may be destroyed after this library's statics are
+// (see ProcessEnding). As a static object, pvbatch's sys.exit() freed ClientBuffers' nodes twice.
+Bindings& TheBindings()
+{
+  static Bindings* bindings = new Bindings;
+  return *bindings;
+}
 
 void DestroyNow(void (*destroy)(osmesa_context*), osmesa_context* context)
 {
   destroy(context);
-  std::lock_guard<std::mutex> lock(BindingMutex);
-  ClientBuffers.erase(context);
+  Bindings& b = TheBindings();
+  std::lock_guard<std::mutex> lock(b.Mutex);
+  b.ClientBuffers.erase(context);
 }
 }
 
@@ -398,11 +410,12 @@ void OSMesaLibrary::DestroyContext(osmesa_context* context) const
     return;
   }
   {
-    std::lock_guard<std::mutex> lock(BindingMutex);
-    auto it = BoundOn.find(context);
-    if (it != BoundOn.end() && it->second != std::this_thread::get_id())
+    Bindings& b = TheBindings();
+    std::lock_guard<std::mutex> lock(b.Mutex);
+    auto it = b.BoundOn.find(context);
+    if (it != b.BoundOn.end() && it->second != std::this_thread::get_id())
     {
-      Orphans.insert(context);
+      b.Orphans.insert(context);
       return;
     }
   }
@@ -427,15 +440,16 @@ bool OSMesaLibrary::Bind(osmesa_context* context, std::string* problem) const
     return false;
   }
   void* buffer = nullptr;
+  Bindings& b = TheBindings();
   {
-    std::lock_guard<std::mutex> lock(BindingMutex);
-    auto it = BoundOn.find(context);
-    if (it != BoundOn.end() && it->second != std::this_thread::get_id())
+    std::lock_guard<std::mutex> lock(b.Mutex);
+    auto it = b.BoundOn.find(context);
+    if (it != b.BoundOn.end() && it->second != std::this_thread::get_id())
     {
       *problem = "the context is current on another thread (ReleaseCurrent it there first)";
       return false;
     }
-    std::unique_ptr<unsigned char[]>& pixel = ClientBuffers[context];
+    std::unique_ptr<unsigned char[]>& pixel = b.ClientBuffers[context];
     if (!pixel)
     {
       pixel.reset(new unsigned char[4]());
@@ -449,12 +463,12 @@ bool OSMesaLibrary::Bind(osmesa_context* context, std::string* problem) const
     return false;
   }
   {
-    std::lock_guard<std::mutex> lock(BindingMutex);
+    std::lock_guard<std::mutex> lock(b.Mutex);
     if (previous && previous != context)
     {
-      BoundOn.erase(previous);
+      b.BoundOn.erase(previous);
     }
-    BoundOn[context] = std::this_thread::get_id();
+    b.BoundOn[context] = std::this_thread::get_id();
   }
   if (!current &&
     !this->E->DispatchMakeCurrent(&OSMesaThreadState, this->E->Table, this->E->VendorID, nullptr))
@@ -474,9 +488,10 @@ void OSMesaLibrary::Unbind() const
     this->E->MakeCurrent(nullptr, nullptr, 0, 0, 0);
     bool orphan = false;
     {
-      std::lock_guard<std::mutex> lock(BindingMutex);
-      BoundOn.erase(current);
-      orphan = Orphans.erase(current) > 0;
+      Bindings& b = TheBindings();
+      std::lock_guard<std::mutex> lock(b.Mutex);
+      b.BoundOn.erase(current);
+      orphan = b.Orphans.erase(current) > 0;
     }
     if (orphan)
     {
@@ -499,6 +514,44 @@ bool OSMesaLibrary::IsBound(osmesa_context* context) const
 bool OSMesaLibrary::OwnsThreadDispatch() const
 {
   return this->E->GetCurrentThreadState() == &OSMesaThreadState;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+std::atomic<bool> Ending{ false };
+
+// Its destructor runs with this library's other static objects, after Mesa's own exit handlers
+// (registered when the first context was made, later than this object) and before the static
+// objects of the libraries loaded before this one (ParaView's process module, which destroys the
+// views and their windows). From then on the headless windows make no GL or window-system call,
+// and the thread's GL dispatch (libGLdispatch, still alive) no longer points into libOSMesa.
+struct EndWatch
+{
+  ~EndWatch()
+  {
+    Ending.store(true);
+    if (const OSMesaLibrary* library = LoadedLibrary.load())
+    {
+      library->LoseDispatchIfOwned();
+    }
+  }
+} TheEndWatch;
+}
+
+//------------------------------------------------------------------------------
+bool ProcessEnding()
+{
+  return Ending.load();
+}
+
+//------------------------------------------------------------------------------
+void OSMesaLibrary::LoseDispatchIfOwned() const
+{
+  if (this->OwnsThreadDispatch())
+  {
+    this->E->LoseCurrent();
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -59,6 +59,15 @@ VTKPHONGVTKRENDERING_EXPORT Choice ChooseWindowFromEnvironment();
 /// Whether DISPLAY names an X server that accepts a connection (probed once per DISPLAY value).
 VTKPHONGVTKRENDERING_EXPORT bool XDisplayAvailable();
 
+/**
+ * Whether the process is ending: this library's static objects are being destroyed (exit(), or
+ * the library unloaded). Windows destroyed after that (ParaView keeps its views in a static of
+ * libvtkRemotingCore, which exit() destroys after a plugin's statics: pvbatch after sys.exit())
+ * leave their contexts to the process's end: the GL libraries loaded after ParaView's have been
+ * finalised by then, and the registries of contexts would be gone.
+ */
+VTKPHONGVTKRENDERING_EXPORT bool ProcessEnding();
+
 /// Releases the OpenGL context current on this thread, whichever library made it current (OSMesa
 /// through PhongVTK, EGL, GLX); nothing when none is. Native state only: no window object needs
 /// to be alive. glvnd lets one window-system library at a time have a context current on a
@@ -110,6 +119,9 @@ public:
   bool Bind(osmesa_context* context, std::string* problem) const;
   /// Releases the thread's OSMesa context and glvnd's dispatch to it, if they are current.
   void Unbind() const;
+  /// Makes no GL dispatch table current on this thread if OSMesa's is (libGLdispatch alone; no
+  /// call into libOSMesa): at the process's end, when Mesa may be finalised.
+  void LoseDispatchIfOwned() const;
   /// Whether `context` is current on this thread and glvnd dispatches to it.
   bool IsBound(osmesa_context* context) const;
   /// Whether glvnd dispatches to some OSMesa context on this thread.

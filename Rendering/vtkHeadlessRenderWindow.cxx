@@ -371,7 +371,9 @@ void vtkHeadlessRenderWindow::CreateAWindow()
 //------------------------------------------------------------------------------
 void vtkHeadlessRenderWindow::DestroyWindow()
 {
-  if (this->HasContext())
+  // At the process's end (phongvtk::headless::ProcessEnding) the context is left to the exit:
+  // no GL call is made and no context destroyed with libraries that are already finalised.
+  if (this->HasContext() && !phongvtk::headless::ProcessEnding())
   {
     this->MakeCurrent();
     if (this->IsCurrent())
@@ -435,9 +437,9 @@ void vtkHeadlessRenderWindow::Frame()
 //------------------------------------------------------------------------------
 void vtkHeadlessRenderWindow::MakeCurrent()
 {
-  if (!this->HasContext())
+  if (!this->HasContext() || phongvtk::headless::ProcessEnding())
   {
-    return;
+    return; // no context, or none to be made current any more (GL calls then do nothing)
   }
   // VTK calls this many times a frame: cheap when nothing changed.
   if (!this->RebindPending && this->IsContextBound())
@@ -473,7 +475,7 @@ void vtkHeadlessRenderWindow::RecordCurrent()
 //------------------------------------------------------------------------------
 void vtkHeadlessRenderWindow::ReleaseCurrent()
 {
-  if (this->HasContext() && this->IsContextBound())
+  if (this->HasContext() && !phongvtk::headless::ProcessEnding() && this->IsContextBound())
   {
     this->UnbindContext();
   }
@@ -491,7 +493,7 @@ void vtkHeadlessRenderWindow::ReleaseForGLXWindows()
 //------------------------------------------------------------------------------
 bool vtkHeadlessRenderWindow::IsCurrent()
 {
-  return this->HasContext() && this->IsContextBound();
+  return this->HasContext() && !phongvtk::headless::ProcessEnding() && this->IsContextBound();
 }
 
 //------------------------------------------------------------------------------
@@ -504,7 +506,7 @@ void vtkHeadlessRenderWindow::SetForceMakeCurrent()
 void vtkHeadlessRenderWindow::PushContext()
 {
   vtkHeadlessRenderWindow* previous =
-    CurrentOnThread && CurrentOnThread->IsContextBound() ? CurrentOnThread.GetPointer() : nullptr;
+    CurrentOnThread && CurrentOnThread->IsCurrent() ? CurrentOnThread.GetPointer() : nullptr;
   this->ContextStack.emplace_back(previous);
   if (previous != this)
   {

@@ -102,6 +102,26 @@ def test_bad_property_values_are_clear_errors_not_crashes():
     assert "GLEW" not in log and "Loguru caught" not in log
 
 
+# How a batch script leaves, and the status the process must return. sys.exit() in pvbatch and
+# pvpython used to free a registry of PhongVTK's contexts twice at exit (ParaView destroys its
+# views from a static of libvtkRemotingCore, after the plugin's statics), and Loguru's handler
+# then deadlocked: the process never returned.
+ENDINGS = {"end": 0, "exit0": 0, "exit3": 3, "raise": 1}
+
+
+@pytest.mark.parametrize("ending", sorted(ENDINGS))
+@pytest.mark.parametrize("executable", ["pvbatch", "pvpython"])
+def test_every_way_out_of_a_batch_script_returns_its_status_cleanly(executable, ending):
+    for attempt in range(3):
+        done = subprocess.run([PVBATCH if executable == "pvbatch" else PVPYTHON,
+                               str(HERE / "pv_exit.py"), PLUGIN, ending], env=headless_env(),
+                              capture_output=True, text=True, timeout=60)  # a hang fails
+        log = done.stdout + done.stderr
+        assert done.returncode == ENDINGS[ending], (attempt, done.returncode, log)
+        assert "rendered; leaving by" in done.stdout, log
+        assert not re.search(r"double free|corrupted|free\(\)|Loguru caught a signal", log), log
+
+
 def test_plugin_loads_from_pv_plugin_path():
     script = ("from paraview.simple import *\n"
               "assert 'PolygonNormals' in dir(), 'no PolygonNormals'\n"
