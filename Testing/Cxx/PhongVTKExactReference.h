@@ -130,6 +130,30 @@ double UlpError(double computed, const mpf_class& exact)
   return mpf_class(diff / ulp, ReferenceBits).get_d();
 }
 
+/**
+ * Whether `computed` is a faithful rounding of `exact` to double: one of the two doubles next to
+ * it, and the exact value itself when that is a double (so 0 for an exact 0, and 1 - 2^-53 is
+ * not faithful for an exact 1, although it lies half an ulp of 1's binade away).
+ */
+inline bool IsFaithful(double computed, const mpf_class& exact)
+{
+  const mpf_class e(exact, ReferenceBits);
+  const double towardZero = e.get_d(); // GMP truncates
+  if (mpf_class(towardZero, ReferenceBits) == e)
+  {
+    return computed == towardZero;
+  }
+  const double away = std::nextafter(towardZero, e > 0 ? HUGE_VAL : -HUGE_VAL);
+  return computed == towardZero || computed == away;
+}
+
+/// Whether every component of a computed unit normal is a faithful rounding (IsFaithful).
+inline bool NormalIsFaithful(const double computed[3], const std::array<mpf_class, 3>& exact)
+{
+  return IsFaithful(computed[0], exact[0]) && IsFaithful(computed[1], exact[1]) &&
+    IsFaithful(computed[2], exact[2]);
+}
+
 /// Largest UlpError over the three components of a unit normal.
 template <class Real>
 double NormalUlpError(const double computed[3], const std::array<mpf_class, 3>& exact)
