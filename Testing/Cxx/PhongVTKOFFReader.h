@@ -14,6 +14,8 @@
 #ifndef PhongVTKOFFReader_h
 #define PhongVTKOFFReader_h
 
+#include "PhongVTKSkip.h"
+
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
@@ -270,8 +272,8 @@ inline bool HaveCGALMeshes()
   {                                                                                                \
     if (!phongvtk_test::HaveCGALMeshes())                                                          \
     {                                                                                              \
-      GTEST_SKIP() << "CGAL sample meshes not found in " PHONGVTK_CGAL_MESHES                      \
-                      " (install Debian's libcgal-demo and re-run CMake)";                         \
+      PHONGVTK_SKIP() << "CGAL sample meshes not found in " PHONGVTK_CGAL_MESHES                   \
+                         " (install Debian's libcgal-demo and re-run CMake)";                      \
     }                                                                                              \
   } while (false)
 #endif

@@ -6,6 +6,7 @@
 #include "PhongVTKExactReference.h"
 #include "PhongVTKFilterTestSupport.h"
 #include "PhongVTKOFFReader.h"
+#include "PhongVTKSkip.h"
 #include "vtkPolygonNormals.h"
 #include "vtkVisibleArea.h"
 
@@ -406,7 +407,7 @@ TEST(AutoOrient, OpenSurfacesFaceAwayFromTheirMiddle)
   // turned back, then auto-oriented, must come back to the file's orientation.
   if (!phongvtk_test::HaveCGALMeshes())
   {
-    GTEST_SKIP() << "CGAL's sample meshes are not unpacked";
+    PHONGVTK_SKIP() << "CGAL's sample meshes are not unpacked";
   }
   for (const char* name : { "elephant-with-holes.off", "cube-ouvert.off", "hedra_open.off" })
   {

@@ -4,6 +4,7 @@
 #include "PhongVTKHeadless.h"
 #include "PhongVTKImageRegression.h"
 #include "PhongVTKRenderingTestSupport.h"
+#include "PhongVTKSkip.h"
 
 #include "vtkHeadlessEGLRenderWindow.h"
 #include "vtkHeadlessOSMesaRenderWindow.h"
@@ -613,7 +614,7 @@ protected:
     unsetenv("PHONGVTK_HEADLESS");
     if (this->Server.Display.empty())
     {
-      GTEST_SKIP() << "Xvfb is not installed (Debian package xvfb)";
+      PHONGVTK_SKIP() << "Xvfb is not installed (Debian package xvfb)";
     }
     setenv("DISPLAY", this->Server.Display.c_str(), 1);
   }

@@ -5,6 +5,7 @@
 #include "PhongVTKFilterTestSupport.h"
 #include "PhongVTKOFFReader.h"
 #include "PhongVTKOrientation.h"
+#include "PhongVTKSkip.h"
 #include "vtkPolygonNormals.h"
 
 #include "vtkCellArray.h"
@@ -181,7 +182,7 @@ TEST(Orientation, AgreesWithVTKsConsistencyOnRealMeshes)
 {
   if (!phongvtk_test::HaveCGALMeshes())
   {
-    GTEST_SKIP() << "CGAL's sample meshes are not unpacked";
+    PHONGVTK_SKIP() << "CGAL's sample meshes are not unpacked";
   }
   for (const char* name : { "fandisk.off", "elephant.off", "bunny00.off" })
   {

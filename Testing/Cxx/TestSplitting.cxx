@@ -6,6 +6,7 @@
 #include "PhongVTKFeatureAngle.h"
 #include "PhongVTKFilterTestSupport.h"
 #include "PhongVTKOFFReader.h"
+#include "PhongVTKSkip.h"
 #include "PhongVTKSplitting.h"
 #include "vtkPolygonNormals.h"
 
@@ -1059,7 +1060,7 @@ TEST(Splitting, RealMeshesSplitAsVTKDoesWhereItsFloatTestCannotBeFooled)
 {
   if (!phongvtk_test::HaveCGALMeshes())
   {
-    GTEST_SKIP() << "CGAL's sample meshes are not unpacked";
+    PHONGVTK_SKIP() << "CGAL's sample meshes are not unpacked";
   }
   for (const char* name : { "fandisk.off", "cube_poly.off", "elephant.off", "cross.off" })
   {
