@@ -14,7 +14,7 @@ import sys
 import numpy as np
 from paraview import servermanager as sm
 from paraview.simple import (ExtractSurface, GhostCellsGenerator, LoadPlugin,
-                             RedistributeDataSet, XMLPolyDataReader)
+                             ProcessIdScalars, RedistributeDataSet, XMLPolyDataReader)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 plugin, mesh, output, accuracy, weighting, splitting = sys.argv[1:7]
@@ -26,7 +26,10 @@ ghosts = GhostCellsGenerator(Input=pieces)
 normals = PolygonNormals(Input=ghosts, ComputePointNormals=1, Accuracy=accuracy,
                          PointWeighting=weighting, OutputPrecision="Double",
                          Splitting=int(splitting), AutoOrientNormals=auto_orient)
-gathered = sm.Fetch(normals)
+# Each point carries the rank that computed it ("ProcessId"; a piece's points are its own
+# copies, so a cell's rank is its first point's): the test sees that every rank had a piece,
+# and how many ghost cells the pieces had.
+gathered = sm.Fetch(ProcessIdScalars(Input=normals))
 
 
 def owned(data, name):
@@ -40,6 +43,13 @@ def owned(data, name):
 
 cell_ids, cell_normals = owned(gathered.GetCellData(), "OriginalCellId")
 point_ids, point_normals = owned(gathered.GetPointData(), "OriginalPointId")
+polys = gathered.GetPolys()
+first_points = vtk_to_numpy(polys.GetConnectivityArray())[
+    vtk_to_numpy(polys.GetOffsetsArray())[:-1]]
+ranks = vtk_to_numpy(gathered.GetPointData().GetArray("ProcessId"))[first_points].astype(int)
+ghost = gathered.GetCellData().GetArray("vtkGhostType")
+is_ghost = np.zeros(len(ranks), bool) if ghost is None else vtk_to_numpy(ghost) != 0
 np.savez(output, cell_ids=cell_ids, cell_normals=cell_normals, point_ids=point_ids,
-         point_normals=point_normals)
+         point_normals=point_normals, owned_cells_per_rank=np.bincount(ranks[~is_ghost]),
+         ghost_cells=int(is_ghost.sum()))
 print("ranks' pieces gathered:", gathered.GetNumberOfCells(), "cells,", len(cell_ids), "owned")

@@ -193,6 +193,11 @@ def test_distributed_normals_equal_the_serial_ones_bit_for_bit(tmp_path, distrib
                    script, PLUGIN, str(distributed_mesh), str(result), accuracy, weighting, "0"])
         assert error_lines(log) == [], "\n".join(error_lines(log))
         got = np.load(result)
+        # The ranks really split the mesh, and the pieces had the ghost layer the filter asks for.
+        per_rank = got["owned_cells_per_rank"]
+        assert len(per_rank) == ranks and (per_rank > 0).all(), (ranks, per_rank)
+        assert per_rank.sum() == n_cells, (ranks, per_rank)
+        assert got["ghost_cells"] > 0, ranks
         for kind in ("cell", "point"):
             ids, normals = got[f"{kind}_ids"], got[f"{kind}_normals"]
             expected = reference[f"{kind}_normals"][np.argsort(reference[f"{kind}_ids"])]
