@@ -44,6 +44,11 @@ def mapped(path):
         yield data
 
 
+def number(digits):
+    """The count written as `digits` (bytes); more than 18 digits: a count beyond any file."""
+    return int(digits) if len(digits) <= 18 else 10 ** 19
+
+
 def refuse(path, what, values, size):
     raise CommandError(f"'{path}' is not a valid file: it declares {what}, {values} values "
                        f"or more, and holds {size} bytes")
@@ -56,12 +61,14 @@ def check_legacy_counts(path):
     with mapped(path) as data:
         for match in LEGACY_COUNT.finditer(data):
             keyword, first, second = match.groups()
-            values = max(int(first) * VALUES_PER_ITEM.get(keyword, 1), int(second or 0))
+            values = max(number(first) * VALUES_PER_ITEM.get(keyword, 1), number(second or b"0"))
             if values > size:
                 refuse(path, f"'{match.group(0).decode(errors='replace').strip()}'", values,
                        size)
         for match in LEGACY_FIELD_ARRAY.finditer(data):
-            values = int(match.group(1)) * int(match.group(2))
+            values = number(match.group(1)) * number(match.group(2))
+            if match.group(3) == b"bit":  # packed eight to a byte
+                values = (values + 7) // 8
             if values > size:
                 refuse(path, "a field array "
                        f"'{match.group(0).decode(errors='replace').strip()}'", values, size)
@@ -76,7 +83,7 @@ def check_vtp_counts(path):
         pieces = [piece.group(0) for piece in VTP_PIECE.finditer(data, 0, size if end < 0 else end)]
         factor = COMPRESSION if b"compressor=" in data[:4096] else 1
     for piece in pieces:
-        counts = {name.decode(): int(value) for name, value in VTP_COUNT.findall(piece)}
+        counts = {name.decode(): number(value) for name, value in VTP_COUNT.findall(piece)}
         values = 3 * counts.get("NumberOfPoints", 0) + sum(
             count for name, count in counts.items() if name != "NumberOfPoints")
         if values > factor * size:

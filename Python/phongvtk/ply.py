@@ -69,7 +69,7 @@ def parse_elements(lines, path):
         if words[0] == b"end_header":
             break
         if words[0] == b"element":
-            if len(words) != 3 or not words[2].isdigit():
+            if len(words) != 3 or not words[2].isdigit() or len(words[2]) > 18:
                 raise CommandError(f"'{path}' is not a valid PLY file: header line {number} "
                                    f"should be 'element NAME COUNT', is '{quoted(words)}'")
             elements.append(Element(words[1].decode(errors="replace"), int(words[2]), [],
@@ -85,6 +85,31 @@ def parse_elements(lines, path):
             elements[-1].properties.append(
                 Property(name, types[0], types[1]) if is_list else Property(name, None, types[0]))
     return elements
+
+
+def check_structure(elements, path):
+    """Raises CommandError unless vtkPLYReader reads the elements where they are: it reads the
+    'vertex' and 'face' elements only, without skipping others, so no other element may come
+    before them; and a face's vertex indices (and texture coordinates) must be lists (it reads
+    them into lists, uninitialised otherwise)."""
+    names = [element.name for element in elements]
+    last = max((k for k, name in enumerate(names) if name in ("vertex", "face")), default=-1)
+    for element in elements[:last]:
+        if element.name not in ("vertex", "face") and element.count:
+            raise CommandError(f"'{path}' is not a PLY file VTK reads: element "
+                               f"'{element.name}' comes before the vertices or faces, and "
+                               "vtkPLYReader does not skip it")
+    for element in elements:
+        if element.name != "face" or not element.count:
+            continue
+        props = {prop.name: prop for prop in element.properties}
+        index = [props[name] for name in INDEX_PROPERTIES if name in props]
+        if not index or index[0].count is None:
+            raise CommandError(f"'{path}' is not a PLY file VTK reads: its faces have no list "
+                               "'vertex_indices'")
+        if "texcoord" in props and props["texcoord"].count is None:
+            raise CommandError(f"'{path}' is not a PLY file VTK reads: its faces' 'texcoord' "
+                               "is not a list")
 
 
 def least_body(elements, binary):
@@ -119,6 +144,7 @@ def check_ply(path):
     binary = formats[0][1:2] != [b"ascii"]
     body_start = sum(len(line) + 1 for line in raw[: len(header)])
     elements = parse_elements(header, path)
+    check_structure(elements, path)
     least = least_body(elements, binary)
     body = os.path.getsize(path) - body_start
     if body < least:
@@ -312,12 +338,14 @@ class AsciiBody:
     def walk(self, elements):
         """Checks every element's lines; raises CommandError on the first one vtkPLYReader
         would read past or in pieces."""
+        # Whole lines only: vtkPLYReader asserts at the end of a file whose last element's
+        # line has no newline.
         count = sum(element.count for element in elements)
-        lines = len(self.starts) - bool(self.data[-1] == 10) if len(self.data) else 0
+        lines = len(self.starts) - 1
         if lines < count:
             raise CommandError(f"'{self.path}' is not a valid PLY file: its header declares "
                                f"{count} elements, a line each in ASCII; the file has {lines} "
-                               "lines after its header")
+                               "whole lines after its header")
         line = 0
         vertices = 0
         for element in elements:
@@ -342,7 +370,7 @@ class AsciiBody:
                       f"{self.LONGEST_LINE} characters vtkPLYReader reads at once")
         lo, hi = int(starts[0]), int(ends[-1])
         text = np.concatenate((self.data[lo:hi], np.full(12, 32, np.uint8)))
-        gap = (text == 32) | (text == 9) | (text == 10)
+        gap = (text == 32) | (text == 9) | (text == 10) | (text == 13)
         begins = np.flatnonzero(~gap & np.concatenate(([True], gap[:-1])))
         words_from = np.searchsorted(begins, starts - lo)
         words = np.searchsorted(begins, ends - lo) - words_from
@@ -350,7 +378,8 @@ class AsciiBody:
         if len(lists) > 1:
             # Several lists: each one's count sits after the lists before it, line by line.
             for k in range(count):
-                self.check_words(element, first + k, text[starts[k] - lo: ends[k] - lo])
+                self.check_words(element, first + k, text[starts[k] - lo: ends[k] - lo],
+                                 vertices)
             return
         needed = np.full(count, scalars, dtype=np.int64)
         if lists:
@@ -365,10 +394,12 @@ class AsciiBody:
             needed += 1 + items
             if vertices is not None:
                 self.check_indices(element, first, text, begins, words_from + at + 1, items,
-                                   words >= needed, vertices)
-        short = np.flatnonzero(words < needed)
-        if short.size:
-            k = int(short[0])
+                                   words == needed, vertices)
+        # VTK 9.2 reads a line an element, VTK 9.6 a stream of words: a line with more words
+        # than its properties take puts 9.6 out of step, one with fewer puts 9.2 past them.
+        wrong = np.flatnonzero(words != needed)
+        if wrong.size:
+            k = int(wrong[0])
             self.fail(element, first + k, f"has {words[k]} values on its line; its properties "
                       f"take {needed[k]}")
 
@@ -388,9 +419,10 @@ class AsciiBody:
             self.fail(element, first + int(rows[row]),
                       f"refers to vertex {values[outside[0]]}; the file has {vertices}")
 
-    def check_words(self, element, index, line):
-        """Checks one line of an element with several lists, word by word."""
-        words = bytes(line).replace(b"\t", b" ").split(b" ")
+    def check_words(self, element, index, line, vertices):
+        """Checks one line of an element with several lists, word by word (`vertices`: the
+        bound of a face's vertex indices, None when not a face)."""
+        words = bytes(line).replace(b"\t", b" ").replace(b"\r", b" ").split(b" ")
         words = [word for word in words if word]
         at = 0
         for prop in element.properties:
@@ -400,14 +432,24 @@ class AsciiBody:
             if prop.count is None:
                 at += 1
                 continue
-            items = int(atoi(np.frombuffer(words[at] + b" " * 12, np.uint8),
-                             np.zeros(1, np.int64))[0])
+            items = word_value(words[at])
             if items < 0:
                 self.fail(element, index, f"has a list of {items} items")
+            if vertices is not None and prop.name in INDEX_PROPERTIES:
+                for word in words[at + 1: at + 1 + items]:
+                    value = word_value(word)
+                    if not 0 <= value < vertices:
+                        self.fail(element, index, f"refers to vertex {value}; the file has "
+                                  f"{vertices}")
             at += 1 + items
-        if at > len(words):
+        if at != len(words):
             self.fail(element, index, f"has {len(words)} values on its line; its properties "
                       f"take {at}")
+
+
+def word_value(word):
+    """atoi of one word (bytes)."""
+    return int(atoi(np.frombuffer(word + b" " * 12, np.uint8), np.zeros(1, np.int64))[0])
 
 
 def atoi(text, begins):

@@ -727,7 +727,7 @@ PLY_HEADER_BINARY = (b"ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
     # ASCII cut short: enough bytes for one character a value, too few lines (vtkPLY asserted).
     (b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
      b"property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-     b"0 0 0\n1 0 0\n0 1 0", ["declares 4 elements", "has 3 lines"]),
+     b"0 0 0\n1 0 0\n0 1 0", ["declares 4 elements", "has 2 whole lines"]),
 ])
 def test_ply_whose_header_the_file_cannot_hold_is_a_clean_error(phongvtk_cli, tmp_path, content,
                                                                 words):

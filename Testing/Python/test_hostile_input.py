@@ -188,6 +188,8 @@ ASCII_VERTICES = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
     (ASCII_VERTICES + "-3 0 1 2\n3 0 2 3\n", ["face 0 has a list of -3 items"]),
     (ASCII_VERTICES + "99999999999 0 1 2\n3 0 2 3\n", ["face 0 has 4 values"]),
     (ASCII_VERTICES + "3 0 1 2" + " " * 5000 + "\n3 0 2 3\n", ["face 0", "longer than"]),
+    # vtkPLYReader asserted at the end of a last line without its newline.
+    (ASCII_VERTICES + "3 0 1 2\n3 0 2 3", ["declares 6 elements", "5 whole lines"]),
 ])
 def test_ascii_ply_line_vtk_would_read_past_is_named(cli, tmp_path, body, words):
     (tmp_path / "bad.ply").write_text(ASCII_HEADER + body)
@@ -195,13 +197,67 @@ def test_ascii_ply_line_vtk_would_read_past_is_named(cli, tmp_path, body, words)
 
 
 @pytest.mark.parametrize("newline", ["\n", "\r\n"])
-def test_ascii_ply_with_extra_words_and_either_newline_is_read(cli, tmp_path, newline):
-    # Words past those a line's properties take are left alone by vtkPLYReader: so here.
-    body = ASCII_VERTICES.replace("\n", " 7\n") + "3 0 1 2 extra\n3 0 2 3\n"
+def test_ascii_ply_with_either_newline_and_blanks_is_read(cli, tmp_path, newline):
+    body = ASCII_VERTICES.replace("\n", " \t\n") + "  3 0 1 2\n3\t0 2 3 \n"
     (tmp_path / "ok.ply").write_bytes((ASCII_HEADER + body).replace("\n", newline).encode())
     result = cli("normals", "ok.ply", "-o", "out.vtp", "--no-splitting", "-q")
     assert result.returncode == 0, result.stderr
     assert polygons_of(tmp_path / "out.vtp") == [[0, 1, 2], [0, 2, 3]]
+
+
+@pytest.mark.parametrize("body, words", [
+    # VTK 9.2 reads a line an element and leaves extra words; VTK 9.6 reads a stream of words
+    # and would take them for the next face: refused.
+    (ASCII_VERTICES + "3 0 1 2 1 100000000\n3 0 2 3\n", ["face 0 has 6 values", "take 4"]),
+    (ASCII_VERTICES.replace("1 1 0", "1 1 0 7") + "3 0 1 2\n3 0 2 3\n", ["vertex 2 has 4"]),
+    # A carriage return is a blank to vtkPLYReader: the face has three words, not four.
+    (ASCII_VERTICES + "3 0 1 \r\n3 0 2 3\n", ["face 0 has 3 values", "take 4"]),
+])
+def test_ascii_ply_line_with_other_than_its_words_is_named(cli, tmp_path, body, words):
+    (tmp_path / "bad.ply").write_bytes((ASCII_HEADER + body).encode())
+    expect_clean_error(cli("normals", "bad.ply", "-o", "out.vtp"), *words)
+
+
+TWO_LISTS = ("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+             "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
+             "property list uchar float texcoord\nend_header\n" + ASCII_VERTICES)
+
+
+@pytest.mark.parametrize("faces, words", [
+    ("3 0 1 2 6 0 0 1 0 1 1\n3 0 2 3 6 0 0 1 1 0 1\n", None),
+    ("3 0 1 2 6 0 0 1 0 1 1\n3 0 2 100000000 0\n", ["face 1 refers to vertex 100000000"]),
+    ("3 0 1 2 6 0 0 1 0 1 1\n3 0 2 3 6 0 0 1\n", ["face 1 has 8 values", "take 11"]),
+])
+def test_ascii_ply_faces_with_two_lists_are_checked_word_by_word(cli, tmp_path, faces, words):
+    (tmp_path / "uv.ply").write_text(TWO_LISTS + faces)
+    result = cli("normals", "uv.ply", "-o", "out.vtp", "--no-splitting", "-q")
+    if words is None:
+        assert result.returncode == 0, result.stderr
+        assert polygons_of(tmp_path / "out.vtp") == [[0, 1, 2], [0, 2, 3]]
+    else:
+        expect_clean_error(result, *words)
+
+
+@pytest.mark.parametrize("header, words", [
+    # vtkPLYReader reads the vertex and face elements only and does not skip others.
+    (ASCII_HEADER.replace("element vertex 4", "element pad 1\nproperty uchar p\nelement vertex 4"),
+     ["element 'pad' comes before"]),
+    (ASCII_HEADER.replace("property list uchar int vertex_indices", "property int vertex_indices"),
+     ["no list 'vertex_indices'"]),
+    (ASCII_HEADER.replace("vertex_indices", "vertex_list"), ["no list 'vertex_indices'"]),
+    (ASCII_HEADER.replace("element face 2", "element face 99999999999999999999999"),
+     ["should be 'element NAME COUNT'"]),
+])
+def test_ply_header_vtk_would_misread_is_refused(cli, tmp_path, header, words):
+    (tmp_path / "bad.ply").write_text(header + ASCII_VERTICES + "3 0 1 2\n3 0 2 3\n")
+    expect_clean_error(cli("normals", "bad.ply", "-o", "out.vtp"), *words)
+
+
+def test_ply_elements_after_the_faces_are_left_alone(cli, tmp_path):
+    header = ASCII_HEADER.replace("end_header", "element edge 1\nproperty int a\nend_header")
+    (tmp_path / "ok.ply").write_text(header + ASCII_VERTICES + "3 0 1 2\n3 0 2 3\n5\n")
+    result = cli("normals", "ok.ply", "-o", "out.vtp", "--no-splitting", "-q")
+    assert result.returncode == 0, result.stderr
 
 
 # --- legacy VTK and VTP: cell arrays VTK's readers take as they are ------------------------------
@@ -243,6 +299,8 @@ def test_legacy_vtk_cells_that_are_not_cells_are_an_error(cli, tmp_path, offsets
         "POLYGONS 3 6", "POLYGONS 3 99999999999"), "'POLYGONS 3 99999999999'"),
     ("field.vtk", LEGACY.format(offsets="0 3 6", ids="0 1 2 0 2 3") +
      "FIELD FieldData 1\nsize 1 99999999999 double\n1.0\n", "a field array 'size 1 99999999999"),
+    ("digits.vtk", LEGACY.format(offsets="0 3 6", ids="0 1 2 0 2 3").replace(
+        "POINTS 4", "POINTS " + "9" * 5000), "'POINTS 999"),
     ("piece.vtp", '<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1">\n<PolyData>'
      '<Piece NumberOfPoints="99999999999" NumberOfPolys="1"></Piece></PolyData></VTKFile>\n',
      "NumberOfPoints=99999999999"),
@@ -254,6 +312,14 @@ def test_counts_larger_than_the_file_are_an_error_before_any_allocation(cli, tmp
     limit = lambda: resource.setrlimit(resource.RLIMIT_AS, (4 << 30, 4 << 30))  # noqa: E731
     expect_clean_error(cli("normals", name, "-o", "out.vtp", limit=limit), name, words,
                        "declares")
+
+
+def test_packed_bit_arrays_count_eight_values_a_byte(cli, tmp_path):
+    text = LEGACY.format(offsets="0 3 6", ids="0 1 2 0 2 3") + "FIELD FieldData 1\n"
+    text += f"mask 1 {8 * (len(text) + 100)} bit\n" + "0 " * 300 + "\n"
+    (tmp_path / "bits.vtk").write_text(text)
+    result = cli("normals", "bits.vtk", "-o", "out.vtp", "-q")
+    assert "declares" not in result.stderr, result.stderr
 
 
 # --- outputs ----------------------------------------------------------------------------------
