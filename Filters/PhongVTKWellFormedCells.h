@@ -76,8 +76,14 @@ vtkIdType FirstMalformedCell(const Offsets* offsets, vtkIdType numCells, std::in
     return first.load();
   }
   // Never decreasing from 0: every extent is in order, and inside [0, size] when the last ends
-  // at size.
-  return static_cast<std::int64_t>(offsets[numCells]) == size ? -1 : numCells - 1;
+  // at size; else the first cell that ends past size (or the last, when it ends short of it).
+  if (static_cast<std::int64_t>(offsets[numCells]) == size)
+  {
+    return -1;
+  }
+  const Offsets* past = std::upper_bound(offsets, offsets + numCells + 1, size,
+    [](std::int64_t value, Offsets offset) { return value < static_cast<std::int64_t>(offset); });
+  return std::min<vtkIdType>(static_cast<vtkIdType>(past - offsets) - 1, numCells - 1);
 }
 
 /// FirstMalformedCell of a vtkCellArray (nullptr or empty: -1).

@@ -11,6 +11,7 @@
 
 #include <atomic>
 #include <cctype>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -364,6 +365,10 @@ osmesa_context* OSMesaLibrary::CreateContext(std::string* problem) const
   {
     *problem = "OSMesaCreateContextAttribs could not create an OpenGL 3.2 core context";
   }
+  if (context)
+  {
+    WatchForTheEnd();
+  }
   return context;
 }
 
@@ -521,22 +526,35 @@ namespace
 {
 std::atomic<bool> Ending{ false };
 
-// Its destructor runs with this library's other static objects, after Mesa's own exit handlers
-// (registered when the first context was made, later than this object) and before the static
-// objects of the libraries loaded before this one (ParaView's process module, which destroys the
-// views and their windows). From then on the headless windows make no GL or window-system call,
-// and the thread's GL dispatch (libGLdispatch, still alive) no longer points into libOSMesa.
+void MarkEnding()
+{
+  Ending.store(true);
+  if (const OSMesaLibrary* library = LoadedLibrary.load())
+  {
+    library->LoseDispatchIfOwned();
+  }
+}
+
+// Its destructor runs with this library's other static objects, before the static objects of
+// the libraries loaded before this one (ParaView's process module, which destroys the views and
+// their windows). From then on the headless windows make no GL or window-system call, and the
+// thread's GL dispatch (libGLdispatch, still alive) no longer points into libOSMesa.
 struct EndWatch
 {
-  ~EndWatch()
-  {
-    Ending.store(true);
-    if (const OSMesaLibrary* library = LoadedLibrary.load())
-    {
-      library->LoseDispatchIfOwned();
-    }
-  }
+  ~EndWatch() { MarkEnding(); }
 } TheEndWatch;
+}
+
+//------------------------------------------------------------------------------
+void WatchForTheEnd()
+{
+  // Exit handlers run in the reverse order of their registration: registered once the first
+  // context exists (after Mesa registered its own), this one runs before Mesa's, so that a
+  // window kept in a static object made between this library's loading and the first context
+  // (a static of the program, a function-local static) is not torn down by GL calls into a
+  // finalised Mesa.
+  static std::once_flag once;
+  std::call_once(once, [] { std::atexit(MarkEnding); });
 }
 
 //------------------------------------------------------------------------------

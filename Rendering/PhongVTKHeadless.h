@@ -68,6 +68,10 @@ VTKPHONGVTKRENDERING_EXPORT bool XDisplayAvailable();
  */
 VTKPHONGVTKRENDERING_EXPORT bool ProcessEnding();
 
+/// Makes ProcessEnding() true also from the first of exit()'s handlers that runs after Mesa's
+/// (registered once, when a headless context has been created).
+VTKPHONGVTKRENDERING_EXPORT void WatchForTheEnd();
+
 /// Releases the OpenGL context current on this thread, whichever library made it current (OSMesa
 /// through PhongVTK, EGL, GLX); nothing when none is. Native state only: no window object needs
 /// to be alive. glvnd lets one window-system library at a time have a context current on a

@@ -1,5 +1,7 @@
 #include "vtkHeadlessEGLRenderWindow.h"
 
+#include "PhongVTKHeadless.h"
+
 #include "vtkObjectFactory.h"
 
 #include <EGL/egl.h>
@@ -142,6 +144,7 @@ bool vtkHeadlessEGLRenderWindow::CreateContext(std::string& problem)
     return false;
   }
   this->Context = context;
+  phongvtk::headless::WatchForTheEnd();
   return true;
 }
 

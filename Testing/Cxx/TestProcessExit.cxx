@@ -73,6 +73,21 @@ TEST_F(ProcessExit, RenderedWindowsInStaticObjects)
     ::testing::ExitedWithCode(0), "");
 }
 
+TEST_F(ProcessExit, WindowsInStaticsMadeBeforeTheFirstContext)
+{
+  // Their destructors were registered before Mesa's exit handlers (made with the first context),
+  // so exit() runs them after Mesa's: they must make no GL call then.
+  EXPECT_EXIT(
+    {
+      static vtkSmartPointer<vtkRenderWindow> early = OSMesa();
+      static vtkSmartPointer<vtkRenderWindow> earlyEGL = EGL();
+      Rendered(early);
+      Rendered(earlyEGL);
+      std::exit(4);
+    },
+    ::testing::ExitedWithCode(4), "");
+}
+
 TEST_F(ProcessExit, LeakedAndNeverRenderedWindows)
 {
   EXPECT_EXIT(

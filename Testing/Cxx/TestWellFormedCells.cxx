@@ -49,6 +49,7 @@ TEST(WellFormedCells, TheFirstCellWithoutAnExtentIsNamed)
   EXPECT_EQ(FirstOf({ 0, 3, 2, 6 }, 6), 1);       // cell 1 ends before it starts
   EXPECT_EQ(FirstOf({ 0, 3, 2, 1, 6 }, 6), 1);    // the first of two
   EXPECT_EQ(FirstOf({ 0, 3, 6, 9 }, 8), 2);       // the last runs past the connectivity
+  EXPECT_EQ(FirstOf({ 0, 10, 10, 10 }, 5), 0);    // the first already does
   EXPECT_EQ(FirstOf({ 0, 3, 6, 7 }, 9), 2);       // or stops short of its end
   EXPECT_EQ(FirstOf({ 0, 3, 1 << 30, 9 }, 9), 2); // a huge offset, then back
 }
