@@ -22,15 +22,13 @@ import numpy as np
 
 from .errors import CommandError
 
-#: Bytes of each PLY scalar type, under both of its names.
-PLY_TYPE_SIZES = {"char": 1, "uchar": 1, "short": 2, "ushort": 2, "int": 4, "uint": 4,
-                  "float": 4, "double": 8, "int8": 1, "uint8": 1, "int16": 2, "uint16": 2,
-                  "int32": 4, "uint32": 4, "float32": 4, "float64": 8}
-#: numpy's letter for each PLY scalar type (its size from PLY_TYPE_SIZES).
-PLY_TYPE_KINDS = {"char": "i", "uchar": "u", "short": "i", "ushort": "u", "int": "i",
-                  "uint": "u", "float": "f", "double": "f", "int8": "i", "uint8": "u",
-                  "int16": "i", "uint16": "u", "int32": "i", "uint32": "u", "float32": "f",
-                  "float64": "f"}
+#: numpy's type code of each PLY scalar type, under both of its names.
+PLY_TYPES = {"char": "i1", "uchar": "u1", "short": "i2", "ushort": "u2", "int": "i4",
+             "uint": "u4", "float": "f4", "double": "f8", "int8": "i1", "uint8": "u1",
+             "int16": "i2", "uint16": "u2", "int32": "i4", "uint32": "u4", "float32": "f4",
+             "float64": "f8"}
+#: Bytes of each PLY scalar type.
+PLY_TYPE_SIZES = {name: int(code[1]) for name, code in PLY_TYPES.items()}
 #: The face properties vtkPLYReader takes for a face's vertex indices.
 INDEX_PROPERTIES = ("vertex_indices", "vertex_index")
 
@@ -49,7 +47,7 @@ def quoted(words, limit=40):
 
 def numpy_type(ply_type, endian):
     """The numpy dtype of the PLY scalar type `ply_type` in byte order `endian` ('<', '>')."""
-    return np.dtype(f"{endian}{PLY_TYPE_KINDS[ply_type]}{PLY_TYPE_SIZES[ply_type]}")
+    return np.dtype(endian + PLY_TYPES[ply_type])
 
 
 def parse_elements(lines, path):
@@ -207,7 +205,7 @@ class BinaryBody:
             if at + size + width > len(self.data):
                 self.fail(element, index, "runs past the end of the file")
             count = int.from_bytes(self.raw[at + size: at + size + width], order,
-                                   signed=PLY_TYPE_KINDS[prop.count] == "i")
+                                   signed=PLY_TYPES[prop.count][0] == "i")
             if count < 0:
                 self.fail(element, index, f"has a list '{prop.name}' of {count} items")
             counts.append(count)
