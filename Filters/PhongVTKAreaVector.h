@@ -174,14 +174,21 @@ PHONGVTK_INLINE V4 Load(const T* p)
   return V4{ static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2]), 0.0 };
 }
 
+// Lane permutations: GCC's __builtin_shuffle, Clang's __builtin_shufflevector.
+#if defined(__clang__)
+#define PHONGVTK_SHUFFLE4(v, a, b, c, d) __builtin_shufflevector(v, v, a, b, c, d)
+#else
+#define PHONGVTK_SHUFFLE4(v, a, b, c, d) __builtin_shuffle(v, V4i{ a, b, c, d })
+#endif
+
 PHONGVTK_INLINE V4 RotateYZX(V4 v)
 {
-  return __builtin_shuffle(v, V4i{ 1, 2, 0, 3 });
+  return PHONGVTK_SHUFFLE4(v, 1, 2, 0, 3);
 }
 
 PHONGVTK_INLINE V4 RotateZXY(V4 v)
 {
-  return __builtin_shuffle(v, V4i{ 2, 0, 1, 3 });
+  return PHONGVTK_SHUFFLE4(v, 2, 0, 1, 3);
 }
 
 PHONGVTK_INLINE V4 Abs(V4 v)
