@@ -248,9 +248,10 @@ AutoOrientReport AutoOrient(const T* points, vtkIdType numPolys, const Offsets* 
   }
   for (std::size_t c = 0; c < numComponents; ++c)
   {
-    if (parts[c].Closed)
+    const vtkIdType f = orientation.ComponentFirst[c];
+    // A polygon without vertices is a component of its own, without a volume or a point.
+    if (parts[c].Closed && offsets[f + 1] > offsets[f])
     {
-      const vtkIdType f = orientation.ComponentFirst[c];
       point(static_cast<vtkIdType>(conn[offsets[f]]), parts[c].Reference);
     }
   }

@@ -545,6 +545,28 @@ TEST(AutoOrient, AFlatComponentKeepsItsFirstPolygonsOrder)
   }
 }
 
+TEST(AutoOrient, PolygonsWithoutVerticesAreComponentsWithoutAVolume)
+{
+  // Found by FuzzPolyDataFilters: a polygon with no vertex is a closed component of its own, and
+  // its reference point was read from the next polygon's ids or, for the last polygon, past the
+  // end of the connectivity (AddressSanitizer in the sanitizer suite). Now it has none: the
+  // tetrahedron still turns outward, the empty polygons stay empty.
+  auto tet = ContrivedTetrahedron();
+  const Point center{ 0.0625, 0.375, 0.375 };
+  Cells cells;
+  cells.Polys = PolygonsOf(tet);
+  std::reverse(cells.Polys[1].begin(), cells.Polys[1].end());
+  cells.Polys.insert(cells.Polys.begin(), Cell{});
+  cells.Polys.insert(cells.Polys.begin() + 3, Cell{});
+  cells.Polys.push_back(Cell{});
+  auto out = AutoOriented(MakePolyData(PointsOf(tet), cells));
+  ASSERT_EQ(out->GetNumberOfPolys(), 7);
+  const std::vector<Cell> polys = PolygonsOf(out);
+  EXPECT_TRUE(polys[0].empty() && polys[3].empty() && polys[6].empty());
+  EXPECT_EQ(FacingBack(out, 1, 3, From(center)) + FacingBack(out, 4, 6, From(center)), 0);
+  EXPECT_GT(ExactSixVolume(out, { 1, 2, 4, 5 }), 0);
+}
+
 TEST(AutoOrient, TinyAndHugeCoordinates)
 {
   // Scaled by 1e-200 (products underflow) and 1e150 (they overflow): left to the exact sum.
