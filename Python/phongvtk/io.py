@@ -26,6 +26,7 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 
 from .counts import check_legacy_counts, check_vtp_counts
 from .errors import CommandError
+from .obj import check_obj
 from .ply import check_ply
 from .progress import Progress, native_lines_dropped, vtk_output_captured
 
@@ -101,6 +102,7 @@ def read_mesh(path, progress=None):
         mesh = reader.GetOutput()
     check_surface(mesh, path)
     check_cells(mesh, path)
+    drop_mismatched_arrays(mesh, path, progress)
     return mesh
 
 
@@ -161,7 +163,7 @@ def check_stl_size(path):
 
 #: Checks of a file before VTK's reader sees it, by extension.
 SNIFFERS = {".ply": check_ply, ".stl": check_stl_size, ".vtk": check_legacy_counts,
-            ".vtp": check_vtp_counts}
+            ".vtp": check_vtp_counts, ".obj": check_obj}
 
 
 def check_output(path, extensions, source=None):
@@ -227,6 +229,22 @@ def check_cells(mesh, path):
             cell = int(np.searchsorted(offsets, outside[0], side="right")) - 1
             raise CommandError(f"'{path}' is corrupt: {noun} {cell} refers to point "
                                f"{ids[outside[0]]}; the mesh has {points} points")
+
+
+def drop_mismatched_arrays(mesh, path, progress):
+    """Removes, with a warning each, the point and cell arrays of `mesh` (read from `path`) that
+    do not hold one value per point or cell: every filter downstream would read past their end.
+    VTK's OBJ reader makes them from valid files (``GroupIds`` numbers only the faces of a file
+    with lines or points too; texture coordinates indexed like the vertices have one value per
+    ``vt`` line)."""
+    for data, count, noun in ((mesh.GetPointData(), mesh.GetNumberOfPoints(), "point"),
+                              (mesh.GetCellData(), mesh.GetNumberOfCells(), "cell")):
+        for i in reversed(range(data.GetNumberOfArrays())):
+            array = data.GetAbstractArray(i)
+            if array is not None and array.GetNumberOfTuples() != count:
+                progress.warn(f"'{path}': {noun} array '{array.GetName()}' left out: it has "
+                              f"{array.GetNumberOfTuples()} values for {count} {noun}s")
+                data.RemoveArray(i)
 
 
 # --- OFF ------------------------------------------------------------------------------------

@@ -88,9 +88,12 @@ def parse_elements(lines, path):
 def check_structure(elements, path):
     """Raises CommandError unless vtkPLYReader reads the elements where they are: it reads the
     'vertex' and 'face' elements only, without skipping others, so no other element may come
-    before them; and a face's vertex indices (and texture coordinates) must be lists (it reads
-    them into lists, uninitialised otherwise)."""
+    before them; the vertices need scalar x, y and z (without one it crashes); and a face's
+    vertex indices (and texture coordinates) must be lists (it reads them into lists,
+    uninitialised otherwise)."""
     names = [element.name for element in elements]
+    if "vertex" not in names:
+        raise CommandError(f"'{path}' is not a PLY file VTK reads: it has no 'vertex' element")
     last = max((k for k, name in enumerate(names) if name in ("vertex", "face")), default=-1)
     for element in elements[:last]:
         if element.name not in ("vertex", "face") and element.count:
@@ -98,9 +101,15 @@ def check_structure(elements, path):
                                f"'{element.name}' comes before the vertices or faces, and "
                                "vtkPLYReader does not skip it")
     for element in elements:
+        props = {prop.name: prop for prop in element.properties}
+        if element.name == "vertex":
+            missing = [name for name in "xyz" if name not in props or props[name].count]
+            if missing:
+                raise CommandError(f"'{path}' is not a PLY file VTK reads: its vertices have no "
+                                   f"scalar property '{missing[0]}' (vtkPLYReader needs x, y "
+                                   "and z)")
         if element.name != "face" or not element.count:
             continue
-        props = {prop.name: prop for prop in element.properties}
         index = [props[name] for name in INDEX_PROPERTIES if name in props]
         if not index or index[0].count is None:
             raise CommandError(f"'{path}' is not a PLY file VTK reads: its faces have no list "

@@ -253,6 +253,20 @@ def test_ply_header_vtk_would_misread_is_refused(cli, tmp_path, header, words):
     expect_clean_error(cli("normals", "bad.ply", "-o", "out.vtp"), *words)
 
 
+@pytest.mark.parametrize("elements, words", [
+    # Found by FuzzReaders: vertices without y were a SIGSEGV inside vtkPLYReader.
+    ("element vertex 3\nproperty float x\nproperty float z\n", "no scalar property 'y'"),
+    ("element vertex 3\nproperty list uchar float x\nproperty float y\nproperty float z\n",
+     "no scalar property 'x'"),
+    ("", "no 'vertex' element"),  # faces without vertices: a SIGSEGV too
+])
+def test_ply_vertices_vtk_cannot_read_are_refused(cli, tmp_path, elements, words):
+    (tmp_path / "in.ply").write_text("ply\nformat ascii 1.0\n" + elements +
+                                     "element face 0\nproperty list uchar int vertex_indices\n"
+                                     "end_header\n")
+    expect_clean_error(cli("normals", "in.ply", "-o", "out.vtp", "-q"), "in.ply", words)
+
+
 def test_ply_elements_after_the_faces_are_left_alone(cli, tmp_path):
     header = ASCII_HEADER.replace("end_header", "element edge 1\nproperty int a\nend_header")
     (tmp_path / "ok.ply").write_text(header + ASCII_VERTICES + "3 0 1 2\n3 0 2 3\n5\n")
@@ -323,6 +337,58 @@ def test_packed_bit_arrays_count_eight_values_a_byte(cli, tmp_path):
 
 
 # --- outputs ----------------------------------------------------------------------------------
+
+# --- OBJ: every index vtkOBJReader uses --------------------------------------------------------
+
+OBJ_TRIANGLE = "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
+
+
+@pytest.mark.parametrize("body, polygons, words", [
+    # Found by FuzzReaders: a texture index in a file without `vt` lines was a SIGSEGV.
+    ("f 1/2 2/1 3/1\n", None, "line 4 refers to texture coordinate 2; the file has 0"),
+    ("vt 0 0\nf 1/1 2/1 3/1\n", 1, None),
+    ("f 1/1 2/1 3/1\nvt 0 0\n", 1, None),  # indices are global: a later `vt` counts
+    ("vn 0 0 1\nf 1//1 2//1 3//2\n", None, "line 5 refers to normal 2; the file has 1"),
+    ("vt 0 0\nvn 0 0 1\nf 1/1/1 2//1 3/1\n", None, ""),  # VTK's own error: mixed forms
+    ("vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/0 3/1/1\n", None, "line 6 refers to normal 0"),
+    ("f 1 2 4\n", None, "line 4 refers to vertex 4; the file has 3"),
+    ("f -3 -2 -1\n", 1, None),
+    ("f -1 -2 -4\n", None, "line 4 refers to vertex -4"),
+    ("f 1 2 4294967299\n", 1, None),  # C's int: vtkOBJReader reads vertex 3
+    ("f 1 2 \\\n 3\n", 1, None),  # a continuation line
+    ("f 1 2 \\\n 9\n", None, "line 5 refers to vertex 9"),
+    ("l 1/7 2\nf 1 2 3\n", 1, None),  # a line's texture index is ignored; GroupIds is left out
+    ("p 4\nf 1 2 3\n", None, "line 4 refers to vertex 4"),
+    ("usemtl " + "m" * 99 + "\nf 1 2 3\n", 1, None),
+    ("usemtl " + "m" * 100 + "\nf 1 2 3\n", None, "material of 100 characters"),
+])
+def test_obj_indices_vtk_would_use_outside_the_file_are_named(cli, tmp_path, body, polygons,
+                                                               words):
+    (tmp_path / "in.obj").write_text(OBJ_TRIANGLE + body)
+    result = cli("normals", "in.obj", "-o", "out.vtp", "-q")
+    if words is None:
+        assert result.returncode == 0, result.stderr
+        assert len(polygons_of(tmp_path / "out.vtp")) == polygons
+    elif words:
+        expect_clean_error(result, "in.obj", "corrupt OBJ", words)
+    else:
+        expect_clean_error(result, "in.obj")
+
+
+def test_obj_arrays_that_do_not_match_the_points_are_left_out_with_a_warning(cli, tmp_path):
+    # Texture coordinates indexed like the vertices become a point array of one value per `vt`
+    # line: four of them for three points would be read past by every filter downstream.
+    (tmp_path / "in.obj").write_text(OBJ_TRIANGLE + "vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\n"
+                                     "f 1/1 2/2 3/3\n")
+    result = cli("normals", "in.obj", "-o", "out.vtp")
+    assert result.returncode == 0, result.stderr
+    assert "phongvtk: warning: 'in.obj': point array 'TCoords' left out: it has 4 values for 3 " \
+        "points" in result.stderr
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(str(tmp_path / "out.vtp"))
+    reader.Update()
+    assert reader.GetOutput().GetPointData().GetArray("TCoords") is None
+
 
 def sphere_vtp(directory, resolution=200):
     """A sphere of about 2 resolution^2 triangles as directory/sphere.vtp."""
