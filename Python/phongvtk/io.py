@@ -146,13 +146,19 @@ def explain_appended_data(path, error):
     ) from None
 
 
+#: Bytes KWSys's DetectFileType counts as text (vtkSTLReader's choice between ASCII and binary).
+STL_TEXT_BYTES = bytes(range(0x20, 0x80)) + b"\n\r\t"
+
+
 def check_stl_size(path):
-    """Raises CommandError when `path` would be read as binary STL (VTK's test: a byte above 127
-    in the first 256) but is not 80 + 4 + 50 n bytes long for its n triangles: vtkSTLReader
-    trusts the count and aborts the process on a corrupt one."""
+    """Raises CommandError when `path` would be read as binary STL but is not 80 + 4 + 50 n bytes
+    long for its n triangles: vtkSTLReader trusts the count and aborts the process on a corrupt
+    one. It reads binary what vtksys::SystemTools::DetectFileType calls binary: 5 % or more of
+    the first 256 bytes outside printable ASCII, newline, carriage return and tab."""
     with open(path, "rb") as file:
         head = file.read(256)
-    if all(byte < 128 for byte in head):
+    others = len(head.translate(None, STL_TEXT_BYTES))
+    if head and others / len(head) < 0.05:
         return  # ASCII: vtkSTLReader's parser reports errors itself
     size = os.path.getsize(path)
     triangles = int.from_bytes(head[80:84], "little") if len(head) >= 84 else None

@@ -390,6 +390,24 @@ def test_obj_arrays_that_do_not_match_the_points_are_left_out_with_a_warning(cli
     assert reader.GetOutput().GetPointData().GetArray("TCoords") is None
 
 
+STL_TRIANGLE = ("facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n"
+                " endloop\nendfacet\n")
+
+
+def test_stl_kind_is_decided_as_vtk_decides_it(cli, tmp_path):
+    # vtkSTLReader reads binary when 5 % of the first 256 bytes are not text (KWSys's
+    # DetectFileType). Found by FuzzReaders: 20 NUL bytes in 201 were taken for ASCII here and
+    # read as binary by VTK, whose triangle count then asked for 13 GB (an abort).
+    (tmp_path / "nul.stl").write_bytes(b"solid x\n" + b"\0" * 20 + b"x" * 173)
+    expect_clean_error(cli("normals", "nul.stl", "-o", "out.vtp", "-q"), "nul.stl",
+                       "not a valid STL file")
+    # Two bytes above 127 (a UTF-8 name) in an ASCII file: text for VTK, and read.
+    (tmp_path / "utf8.stl").write_bytes(("solid caf\u00e9\n" + STL_TRIANGLE + "endsolid\n").encode())
+    result = cli("normals", "utf8.stl", "-o", "out.vtp", "-q")
+    assert result.returncode == 0, result.stderr
+    assert len(polygons_of(tmp_path / "out.vtp")) == 1
+
+
 def sphere_vtp(directory, resolution=200):
     """A sphere of about 2 resolution^2 triangles as directory/sphere.vtp."""
     from vtkmodules.vtkFiltersSources import vtkSphereSource
