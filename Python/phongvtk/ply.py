@@ -145,6 +145,13 @@ def check_ply(path):
     if not lines or lines[0] != b"ply" or b"end_header" not in lines:
         raise CommandError(f"'{path}' is not a PLY file: no header 'ply' ... 'end_header'")
     header = lines[: lines.index(b"end_header") + 1]
+    for number, line in enumerate(raw[: len(header)], 1):
+        # vtkPLY reads header lines as C strings with fgets(4096): a NUL byte ends the line for it
+        # (and left an element without a name, freed as garbage), a longer line is two lines.
+        if b"\0" in line or len(line) >= 4095:
+            what = "a NUL byte" if b"\0" in line else "more than 4,094 characters"
+            raise CommandError(f"'{path}' is not a valid PLY file: header line {number} holds "
+                               f"{what}")
     formats = [line.split() for line in header if line.startswith(b"format ")]
     if not formats:
         raise CommandError(f"'{path}' is not a PLY file: no 'format' line in its header")

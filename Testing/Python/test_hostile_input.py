@@ -259,6 +259,12 @@ def test_ply_header_vtk_would_misread_is_refused(cli, tmp_path, header, words):
     ("element vertex 3\nproperty list uchar float x\nproperty float y\nproperty float z\n",
      "no scalar property 'x'"),
     ("", "no 'vertex' element"),  # faces without vertices: a SIGSEGV too
+    # Found by FuzzReaders: VTK's C strings end at a NUL, leaving an element without a name
+    # that ply_close freed as garbage (SIGSEGV).
+    ("element vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement\0 x 1\n",
+     "header line 7 holds a NUL byte"),
+    ("element vertex 3\nproperty float x\nproperty float y\nproperty float z\ncomment " +
+     "c" * 5000 + "\n", "header line 7 holds more than 4,094 characters"),
 ])
 def test_ply_vertices_vtk_cannot_read_are_refused(cli, tmp_path, elements, words):
     (tmp_path / "in.ply").write_text("ply\nformat ascii 1.0\n" + elements +
