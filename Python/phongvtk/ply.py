@@ -356,6 +356,13 @@ class AsciiBody:
         # line has no newline.
         count = sum(element.count for element in elements)
         lines = len(self.starts) - 1
+        # A NUL byte ends a line for vtkPLYReader's C strings: the words after it are missing
+        # (a read of a null word: SIGSEGV, found by FuzzReaders).
+        nul = np.flatnonzero(self.data[: self.ends[min(count, lines) - 1]] == 0) if count else []
+        if len(nul):
+            line = int(np.searchsorted(self.starts, nul[0], side="right"))
+            raise CommandError(f"'{self.path}' is not a valid PLY file: line {line} after its "
+                               "header holds a NUL byte")
         if lines < count:
             raise CommandError(f"'{self.path}' is not a valid PLY file: its header declares "
                                f"{count} elements, a line each in ASCII; the file has {lines} "

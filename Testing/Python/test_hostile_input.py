@@ -190,6 +190,8 @@ ASCII_VERTICES = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
     (ASCII_VERTICES + "3 0 1 2" + " " * 5000 + "\n3 0 2 3\n", ["face 0", "longer than"]),
     # vtkPLYReader asserted at the end of a last line without its newline.
     (ASCII_VERTICES + "3 0 1 2\n3 0 2 3", ["declares 6 elements", "5 whole lines"]),
+    # Found by FuzzReaders: a NUL byte ends the line for VTK, whose last word was then missing.
+    ("0 0 0\n1 0 0\0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n", ["line 2", "NUL byte"]),
 ])
 def test_ascii_ply_line_vtk_would_read_past_is_named(cli, tmp_path, body, words):
     (tmp_path / "bad.ply").write_text(ASCII_HEADER + body)
