@@ -51,6 +51,8 @@ packages=(
   xvfb
   # exact arithmetic (EXACT fallback, test reference), tests, benchmarks
   libgmp-dev libgtest-dev libbenchmark-dev python3-pytest python3-numpy
+  # LLVM's FuzzedDataProvider.h: the fuzz targets' input decoding (Testing/Fuzz)
+  libclang-rt-14-dev
   # the plugin's distributed test (mpiexec pvbatch)
   openmpi-bin
   # the command line's benchmark plots (python3 -m phongvtk bench)
