@@ -1,7 +1,16 @@
 #!/usr/bin/env bash
 # The test command: installs, builds, checks formatting and runs the whole suite through CTest.
+#
+#   scripts/test.sh [CTEST ARGS...]              the suite (build/)
+#   scripts/test.sh --sanitize [CTEST ARGS...]   the modules and the C++ tests built with
+#                                                AddressSanitizer + UndefinedBehaviorSanitizer
+#                                                (build-sanitize/; Testing/Sanitizers/)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+if [ "${1:-}" = "--sanitize" ]; then
+  shift
+  exec "$here/Testing/Sanitizers/run.sh" "$@"
+fi
 "$here/scripts/build.sh"
 "$here/scripts/check-format.sh"
 # ParaView's flavour installs every prerequisite of every test: a skip there is a failure.

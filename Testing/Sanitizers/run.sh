@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The modules and their C++ tests under AddressSanitizer + UndefinedBehaviorSanitizer (GCC), in
+# build-sanitize/ (PHONGVTK_SANITIZE_BUILD_DIR). Python, the plugin and the benchmarks are not
+# built: Debian's Python and ParaView are not instrumented, and a sanitized library cannot be
+# loaded into them without preloading the runtime. Any report fails its test (halt_on_error,
+# no recovery from UBSan); the suppressions files beside this script name each exception.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+sanitizers="$here/Testing/Sanitizers"
+export PHONGVTK_BUILD_DIR="${PHONGVTK_SANITIZE_BUILD_DIR:-$here/build-sanitize}"
+flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+# CMake takes these into CMAKE_<LANG>_FLAGS and the linker flags at the first configuration.
+export CFLAGS="$flags" CXXFLAGS="$flags" LDFLAGS="-fsanitize=address,undefined"
+export PHONGVTK_CMAKE_ARGS="-DCMAKE_BUILD_TYPE=RelWithDebInfo -DPHONGVTK_WRAP_PYTHON=OFF
+  -DPHONGVTK_BUILD_PLUGIN=OFF -DPHONGVTK_BUILD_BENCHMARKS=OFF"
+"$here/scripts/build.sh"
+export ASAN_OPTIONS="halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:suppressions=$sanitizers/asan.supp${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+export LSAN_OPTIONS="suppressions=$sanitizers/lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$sanitizers/ubsan.supp${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
+if command -v pvbatch >/dev/null; then
+  export PHONGVTK_NO_SKIPS="${PHONGVTK_NO_SKIPS-1}"
+fi
+cd "$PHONGVTK_BUILD_DIR"
+ctest --output-on-failure -j"$(nproc)" "$@"
