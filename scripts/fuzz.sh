@@ -11,8 +11,15 @@
 # Testing/Fuzz/regressions/<target>/ so that every build's CTest replays it.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-seconds="${1:-60}"
-shift || true
+seconds=60
+if [ $# -gt 0 ]; then
+  if ! [[ "$1" =~ ^[0-9]+$ ]]; then
+    echo "phongvtk: usage: scripts/fuzz.sh [SECONDS] [TARGET...] ('$1' is not a number)" >&2
+    exit 2
+  fi
+  seconds="$1"
+  shift
+fi
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   targets=(FuzzAreaVector FuzzPolyDataFilters FuzzReaders)
@@ -64,12 +71,12 @@ for target in "${targets[@]}"; do
     "$corpus" "$here/Testing/Fuzz/corpus/$target" >"$log" 2>&1; then
     echo "$target: $(grep -E '^#[0-9]+' "$log" | tail -1)"
     grep -E 'stat::(number_of_executed_units|average_exec_per_sec|peak_rss_mb)' "$log" |
-      sed "s/^/$target: /"
+      sed "s/^/$target: /" || true
   else
     status=1
     echo "$target: FINDING (see $log and $findings/)"
     grep -E '^(FuzzAreaVector|FuzzPolyDataFilters|FuzzReaders|==[0-9]+==ERROR|SUMMARY)' "$log" |
-      head -5 | sed "s/^/$target: /"
+      head -5 | sed "s/^/$target: /" || true
   fi
 done
 exit "$status"

@@ -109,14 +109,19 @@ def check_obj(path):
             only_plain_vertex_indices(data):
         return
     lines = list(fgets_lines(data))
-    totals = {b"v": 0, b"vt": 0, b"vn": 0}
-    for line in lines:
-        words = line.split(None, 1)
-        if words and words[0] in totals:
-            totals[words[0]] += 1
 
     def refuse(number, what):
         raise CommandError(f"'{path}' is a corrupt OBJ file: line {number} {what}")
+
+    # vtkOBJReader's first pass: every line, continuation lines too, is a command to it.
+    totals = {b"v": 0, b"vt": 0, b"vn": 0}
+    for number, line in enumerate(lines, 1):
+        words = line.split(None, 2)
+        if words and words[0] in totals:
+            totals[words[0]] += 1
+        elif words[:1] == [b"usemtl"] and len(words) > 1 and len(words[1]) >= MAX_NAME:
+            refuse(number, f"names a material of {len(words[1])} characters (VTK reads at most "
+                   f"{MAX_NAME - 1})")
 
     def index(number, kind, value, seen):
         """The 0-based index vtkOBJReader makes of `value` (relative to the `seen` lines of
@@ -139,12 +144,6 @@ def check_obj(path):
         command = words[0]
         if command in seen:
             seen[command] += 1
-            continue
-        if command == b"usemtl":
-            name = line.split(None, 2)[1:2]
-            if name and len(name[0]) >= MAX_NAME:
-                refuse(number, f"names a material of {len(name[0])} characters (VTK reads at "
-                       f"most {MAX_NAME - 1})")
             continue
         if command not in (b"f", b"l", b"p"):
             continue

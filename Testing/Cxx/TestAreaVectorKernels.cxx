@@ -9,6 +9,7 @@
  * |products| entering component c, which the tests compute exactly:
  *
  *   area vector  |w~_c - w_c| <= B_c = (T + 3) u P_c                   FAST, DOUBLE
+ *                (+ 2^-52 P_c for FAST on double points: their differences rounded to float)
  *                                B_c = u |w_c| + (T + 65) u^2 P_c        COMPENSATED
  *   unit normal  the error of w~ carried through w / |w|, plus N u |n_c| for the normalisation
  *                (N = 4.5 for FAST, which multiplies by a rounded reciprocal, 3.5 otherwise):

@@ -112,7 +112,7 @@ vtkSmartPointer<vtkCellArray> DecodeCells(
     {
       ordered = ordered && offsets->GetValue(i) <= offsets->GetValue(i + 1);
     }
-    for (int i = 0; ordered && i < ids; ++i)
+    for (int i = 0; ordered && count > 0 && i < ids; ++i)
     {
       const vtkIdType id = connectivity->GetValue(i);
       idsInRange = idsInRange && id >= 0 && id < numPoints;

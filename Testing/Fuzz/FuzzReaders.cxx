@@ -106,6 +106,8 @@ int Trace(PyObject*, PyFrameObject* frame, int what, PyObject*)
   {
     PyErr_Print();
   }
+  // fuzz_cli's temporary directory, which an abort leaves behind.
+  PyRun_SimpleString("import fuzz_cli, shutil; shutil.rmtree(fuzz_cli._directory, True)");
   std::abort();
 }
 } // namespace

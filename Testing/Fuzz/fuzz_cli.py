@@ -6,6 +6,7 @@ either succeed and leave a non-empty output file, or fail with status 2 and exac
 reported on the fuzzer's own stderr and aborts, so that libFuzzer keeps the input.
 """
 
+import atexit
 import contextlib
 import io
 import os
@@ -19,6 +20,7 @@ FORMATS = (".off", ".ply", ".stl", ".obj", ".vtk", ".vtp")
 _directory = tempfile.mkdtemp(
     prefix="phongvtk-fuzz-", dir="/dev/shm" if os.path.isdir("/dev/shm") else None)
 _report = None
+atexit.register(shutil.rmtree, _directory, ignore_errors=True)
 
 
 def start(report_fd):

@@ -369,6 +369,8 @@ OBJ_TRIANGLE = "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
     ("p 4\nf 1 2 3\n", None, "line 4 refers to vertex 4"),
     ("usemtl " + "m" * 99 + "\nf 1 2 3\n", 1, None),
     ("usemtl " + "m" * 100 + "\nf 1 2 3\n", None, "material of 100 characters"),
+    # A continuation line is a command of its own to vtkOBJReader's first pass.
+    ("f 1 2 3 \\\nusemtl " + "m" * 120 + "\n", None, "line 5 names a material of 120"),
 ])
 def test_obj_indices_vtk_would_use_outside_the_file_are_named(cli, tmp_path, body, polygons,
                                                                words):
