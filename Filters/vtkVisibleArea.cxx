@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -487,7 +488,11 @@ int vtkVisibleArea::RequestData(vtkInformation* vtkNotUsed(request),
   {
     total = phongvtk::detail::Add(total, p);
   }
-  this->TotalVisibleArea = total.Hi + total.Lo;
+  // Every term is positive: a sum that is not finite overflowed the double range (a TwoSum past
+  // it gives infinity minus infinity), and the total saturates at its largest value, as
+  // MaxVisibleArea does.
+  const double sum = total.Hi + total.Lo;
+  this->TotalVisibleArea = std::isfinite(sum) ? sum : std::numeric_limits<double>::max();
 
   vtkCellData* cd = output->GetCellData();
   cd->AddArray(areas);

@@ -16,7 +16,8 @@
  *   surfaces), degenerate polygons and polygons with non-finite coordinates (those raise one
  *   warning with their count).
  * - field data `TotalVisibleArea`: the sum of the positive visible areas, the area of the
- *   input's polygons seen from the front (also GetTotalVisibleArea()).
+ *   input's polygons seen from the front (also GetTotalVisibleArea()); saturated at the largest
+ *   double when it exceeds the double range.
  * - field data `MaxVisibleAreaDirection` and `MaxVisibleArea` (ComputeMaxVisibleArea, on by
  *   default): `sum w / |sum w|`, the direction from which the polygons together (front minus
  *   back) look largest, and that area, `|sum w| / 2`. Sum w is evaluated from the edges the

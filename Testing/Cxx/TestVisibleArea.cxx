@@ -1035,6 +1035,27 @@ TEST(VisibleAreaBadInput, DegenerateCellsAreZero)
   }
 }
 
+TEST(VisibleAreaBadInput, ATotalBeyondTheDoubleRangeSaturates)
+{
+  // Found by FuzzPolyDataFilters: front faces whose areas are finite but whose sum exceeds the
+  // double range gave a NaN total (the compensated sum's error term is infinity minus infinity).
+  // Eight triangles of area 2^1022 each: the exact total, 2^1025, is beyond the largest double.
+  const double a = std::ldexp(1.0, 512), b = std::ldexp(1.0, 511);
+  Cells cells;
+  for (int k = 0; k < 8; ++k)
+  {
+    cells.Polys.push_back({ 0, 1, 2 });
+  }
+  vtkSmartPointer<vtkPolyData> mesh =
+    MakePolyData({ { { 0, 0, 0 } }, { { a, 0, 0 } }, { { 0, b, 0 } } }, cells);
+  for (int mode : Modes)
+  {
+    FilterRun run = RunFilter(mesh, mode, { { 0, 0, 1 } });
+    EXPECT_EQ(run.Area(0), std::ldexp(1.0, 1022)) << "mode " << mode;
+    EXPECT_EQ(run.Total, std::numeric_limits<double>::max()) << "mode " << mode;
+  }
+}
+
 TEST(VisibleAreaBadInput, EmptyInputIsQuiet)
 {
   auto empty = vtkSmartPointer<vtkPolyData>::New();

@@ -300,6 +300,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       c = Coordinate(in, raw, exponent);
     }
     points->SetPoint(p, x);
+    if (std::getenv("PHONGVTK_FUZZ_VERBOSE"))
+    {
+      points->GetPoint(p, x);
+      dprintf(ReportFd, "point %lld: %a %a %a\n", static_cast<long long>(p), x[0], x[1], x[2]);
+    }
   }
   if (numPoints > 0 || in.ConsumeBool())
   {
@@ -375,20 +380,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   area->SetAccuracy(in.ConsumeIntegralInRange<int>(0, 3));
   area->SetUseInputAreaVectors(in.ConsumeBool());
   area->SetComputeMaxVisibleArea(in.ConsumeBool());
-  const int view = in.ConsumeIntegralInRange<int>(0, 2);
+  const int kind = in.ConsumeIntegralInRange<int>(0, 2);
   double v[3];
   for (double& c : v)
   {
     c = Coordinate(in, in.ConsumeBool(), in.ConsumeIntegralInRange<int>(-1074, 1023));
   }
   vtkNew<vtkCamera> camera;
-  if (view == 0)
+  if (kind == 0)
   {
     area->SetViewDirection(v);
   }
   else
   {
-    camera->SetParallelProjection(view == 1);
+    camera->SetParallelProjection(kind == 1);
     camera->SetPosition(v);
     area->SetCamera(camera);
   }
@@ -397,6 +402,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   area->AddObserver(vtkCommand::WarningEvent, areaErrors);
   vtkPolyData* areaInput = in.ConsumeBool() ? input.GetPointer() : output;
   area->SetInputData(areaInput);
+  char view[256];
+  std::snprintf(view, sizeof(view),
+    "; vtkVisibleArea: accuracy %d, %s (%a, %a, %a), on the %s, input area vectors %d",
+    area->GetAccuracy(),
+    kind == 0     ? "direction"
+      : kind == 1 ? "parallel camera at"
+                  : "perspective camera at",
+    v[0], v[1], v[2], areaInput == output ? "normals' output" : "input",
+    area->GetUseInputAreaVectors());
+  InputSummary += view;
   area->Update();
   vtkPolyData* seen = area->GetOutput();
   Require(areaErrors->Errors <= 1, "vtkVisibleArea: more than one error");
