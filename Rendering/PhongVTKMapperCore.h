@@ -7,6 +7,7 @@
 #ifndef PhongVTKMapperCore_h
 #define PhongVTKMapperCore_h
 
+#include "PhongVTKProgramGuard.h"
 #include "PhongVTKShading.h"
 
 #include "vtkActor.h"
@@ -37,6 +38,8 @@ struct MapperState
     shading::Configuration Configuration;
     std::string VertexSource;
     std::string FragmentSource;
+    ProgramGuard Guard; ///< a program that fails to build draws nothing, reported once
+    bool Built = false; ///< BuildShaders ran in the current UpdateShaders
   };
   std::map<const vtkOpenGLHelper*, Primitive> Primitives;
   shading::Scene Scene;
@@ -65,6 +68,7 @@ struct MapperCore
     // The superclass decides whether VTK would light this primitive at all (and remembers it).
     bool rebuild = m.Base::GetNeedToRebuildShaders(cellBO, ren, act);
     MapperState::Primitive& primitive = state.Primitives[&cellBO];
+    rebuild = rebuild || primitive.Guard.MustBuild();
 
     vtkProperty* property = act->GetProperty();
     vtkInformation* keys = act->GetPropertyKeys();
@@ -143,6 +147,7 @@ struct MapperCore
   {
     m.Base::BuildShaders(shaders, ren, act);
     MapperState::Primitive& primitive = state.Primitives[m.LastBoundBO];
+    primitive.Built = true;
     const std::string vertex = shaders[vtkShader::Vertex]->GetSource();
     const std::string fragment = shaders[vtkShader::Fragment]->GetSource();
     if (vertex != primitive.VertexSource || fragment != primitive.FragmentSource)
@@ -151,6 +156,23 @@ struct MapperCore
     }
     primitive.VertexSource = primitive.Active ? vertex : std::string();
     primitive.FragmentSource = primitive.Active ? fragment : std::string();
+  }
+
+  static void UpdateShaders(
+    M& m, MapperState& state, vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+  {
+    MapperState::Primitive& primitive = state.Primitives[&cellBO];
+    primitive.Guard.Before(cellBO, ren);
+    primitive.Built = false;
+    const vtkMTimeType sourceTime = cellBO.ShaderSourceTime.GetMTime();
+    m.Base::UpdateShaders(cellBO, ren, act);
+    if (primitive.Guard.After(cellBO, ren, primitive.Built, sourceTime))
+    {
+      vtkErrorWithObjectMacro(&m,
+        "The shader program of this actor does not compile or link (VTK's shader error above "
+        "names the line): nothing of it is drawn until it builds. Check the shader "
+        "replacements and custom shader code of the actor's vtkShaderProperty.");
+    }
   }
 
   static void ReplaceShaderColor(
@@ -267,6 +289,10 @@ struct MapperCore
   bool M::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)        \
   {                                                                                                \
     return phongvtk::MapperCore<M>::GetNeedToRebuildShaders(*this, STATE, cellBO, ren, act);       \
+  }                                                                                                \
+  void M::UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)                  \
+  {                                                                                                \
+    phongvtk::MapperCore<M>::UpdateShaders(*this, STATE, cellBO, ren, act);                        \
   }                                                                                                \
   void M::BuildShaders(                                                                            \
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)                \

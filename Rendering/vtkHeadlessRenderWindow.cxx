@@ -16,6 +16,7 @@
 #include "vtkVersionMacros.h"
 #include "vtkWeakPointer.h"
 
+#include <algorithm>
 #include <dlfcn.h>
 
 #include <mutex>
@@ -402,6 +403,10 @@ void vtkHeadlessRenderWindow::Render()
   {
     return; // MakeCurrent said why: no GL call may reach another context, or none
   }
+  if (!this->SizeFits(true))
+  {
+    return; // VTK's framebuffers would fail with a GL error each
+  }
   this->Superclass::Render();
   this->ReleaseForGLXWindows();
 }
@@ -414,7 +419,7 @@ void vtkHeadlessRenderWindow::Start()
     return;
   }
   this->MakeCurrent();
-  if (!this->IsCurrent())
+  if (!this->IsCurrent() || !this->SizeFits(true))
   {
     return;
   }
@@ -567,6 +572,27 @@ bool vtkHeadlessRenderWindow::WindowFramebufferBound()
 }
 
 //------------------------------------------------------------------------------
+bool vtkHeadlessRenderWindow::SizeFits(bool report)
+{
+  const int largest = this->LargestFramebuffer;
+  if (largest <= 0 || (this->Size[0] <= largest && this->Size[1] <= largest))
+  {
+    this->SizeReported = false;
+    return true;
+  }
+  // Once until the window renders again.
+  if (report && !this->SizeReported)
+  {
+    this->SizeReported = true;
+    vtkErrorMacro(<< this->GetBackendName() << " render window: a window of " << this->Size[0]
+                  << " x " << this->Size[1]
+                  << " pixels is larger than the largest framebuffer this OpenGL draws ("
+                  << largest << " pixels a side): nothing rendered.");
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 int vtkHeadlessRenderWindow::GetColorBufferSizes(int* rgba)
 {
   if (rgba && this->WindowFramebufferBound())
@@ -619,6 +645,17 @@ void vtkHeadlessRenderWindow::OpenGLInitContext()
   }
   this->Initialized = true;
 
+  // The largest framebuffer VTK can make: its colour and depth attachments are textures or
+  // renderbuffers, drawn through a viewport.
+  GLint texture = 0;
+  GLint renderbuffer = 0;
+  GLint viewport[2] = { 0, 0 };
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  this->LargestFramebuffer =
+    glGetError() == GL_NO_ERROR ? std::min({ texture, renderbuffer, viewport[0], viewport[1] }) : 0;
+
   // As vtkOpenGLRenderWindow does once per context: the line widths the implementation draws.
   GLfloat range[2] = { 1.0f, 1.0f };
   this->MaximumHardwareLineWidth = 1.0;
@@ -637,6 +674,13 @@ int vtkHeadlessRenderWindow::ReadPixels(
   if (!this->Initialized || !this->HasContext())
   {
     vtkErrorMacro(<< "Nothing to read: the window has not rendered (no OpenGL context).");
+    return VTK_ERROR;
+  }
+  if (!this->SizeFits(false))
+  {
+    vtkErrorMacro(<< "Nothing to read: the window has not rendered (larger than the largest "
+                  << "framebuffer this OpenGL draws, " << this->LargestFramebuffer
+                  << " pixels a side).");
     return VTK_ERROR;
   }
   const int result = this->Superclass::ReadPixels(rect, front, glFormat, glType, data, right);

@@ -163,6 +163,8 @@ private:
   void ReportContextProblem(const std::string& problem);
   // Whether the window-system framebuffer (never rendered into) is bound for drawing.
   bool WindowFramebufferBound();
+  // Whether OpenGL can draw a framebuffer of the window's size; when not, reports it once.
+  bool SizeFits(bool report);
 
   // Remembers this window as the thread's current one (for PushContext).
   void RecordCurrent();
@@ -171,6 +173,8 @@ private:
   void ReleaseForGLXWindows();
 
   std::string ContextProblem;
+  int LargestFramebuffer = 0; // pixels a side; 0 until the context is initialised
+  bool SizeReported = false;  // the window's size was reported too large
   std::vector<vtkWeakPointer<vtkHeadlessRenderWindow>> ContextStack;
   int ScreenSize[2];
 };
