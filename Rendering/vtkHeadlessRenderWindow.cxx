@@ -586,8 +586,8 @@ bool vtkHeadlessRenderWindow::SizeFits(bool report)
     this->SizeReported = true;
     vtkErrorMacro(<< this->GetBackendName() << " render window: a window of " << this->Size[0]
                   << " x " << this->Size[1]
-                  << " pixels is larger than the largest framebuffer this OpenGL draws ("
-                  << largest << " pixels a side): nothing rendered.");
+                  << " pixels is larger than the largest framebuffer this OpenGL draws (" << largest
+                  << " pixels a side): nothing rendered.");
   }
   return false;
 }

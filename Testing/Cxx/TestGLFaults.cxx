@@ -168,8 +168,8 @@ int BrokenShaderChild(bool composite, Fault fault, bool egl)
     image = Capture(window);
     if (!IsBackground(image, BrokenX, Y))
     {
-      fail("frame " + std::to_string(frame) + ": the broken actor drew " +
-        Pixel(image, BrokenX, Y));
+      fail(
+        "frame " + std::to_string(frame) + ": the broken actor drew " + Pixel(image, BrokenX, Y));
     }
     if (IsBackground(image, GoodX, Y))
     {
@@ -225,8 +225,8 @@ protected:
 // VTK 9.2's own vtkOpenGLPolyDataMapper dies with SIGSEGV on the first frame of each of these.
 TEST_F(GLFaults, ShaderThatDoesNotCompileDrawsNothingWithOneError)
 {
-  EXPECT_EXIT(std::exit(BrokenShaderChild(false, Fault::Compile, false)),
-    ::testing::ExitedWithCode(0), "");
+  EXPECT_EXIT(
+    std::exit(BrokenShaderChild(false, Fault::Compile, false)), ::testing::ExitedWithCode(0), "");
 }
 
 TEST_F(GLFaults, ShaderThatDoesNotLinkDrawsNothingWithOneError)
