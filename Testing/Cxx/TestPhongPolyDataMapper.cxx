@@ -554,25 +554,49 @@ TEST_F(PhongMapper, SceneAmbientIsTheLightTimesTheMeanDiffuseReflectance)
 
 namespace
 {
-// The general shader (every term of every light) draws the same image as the specialised one.
+// The general shader (every term of every light) draws the same image as the specialised one,
+// with and without a specular term, in the three modes.
 TEST_F(PhongMapper, GeneralShaderDrawsTheSameImage)
 {
   MaterialSpec matte = WarmMaterial();
   matte.Specular = 0;
-  for (int interpolation : { VTK_FLAT, VTK_GOURAUD, VTK_PHONG })
+  for (const MaterialSpec& material : { matte, WarmMaterial() })
   {
-    PhongScene phong(
-      SphereMesh(48, 24), ThreeColouredLights(), matte, Perspective(), interpolation);
-    const Image specialised = phong.Render();
-    const std::string lean =
-      phong.Mapper->GetFragmentShaderSource() + phong.Mapper->GetVertexShaderSource();
+    const bool specular = material.Specular > 0;
+    for (int interpolation : { VTK_FLAT, VTK_GOURAUD, VTK_PHONG })
+    {
+      PhongScene phong(
+        SphereMesh(48, 24), ThreeColouredLights(), material, Perspective(), interpolation);
+      const Image specialised = phong.Render();
+      const std::string lean =
+        phong.Mapper->GetFragmentShaderSource() + phong.Mapper->GetVertexShaderSource();
+      phong.Mapper->SpecializeShadersOff();
+      const Image general = phong.Render();
+      const std::string full =
+        phong.Mapper->GetFragmentShaderSource() + phong.Mapper->GetVertexShaderSource();
+      EXPECT_LE(MaxAbsDifference(specialised, general), 1)
+        << "interpolation " << interpolation << (specular ? " with" : " without") << " specular";
+      EXPECT_EQ(lean.find("phongSpecular(") != std::string::npos, specular);
+      EXPECT_NE(full.find("phongSpecular("), std::string::npos);
+    }
+  }
+}
+
+// The general shader's specular path against the exact sphere (as the specialised shader is in
+// PhongShadingMatchesTheExactSphere): the highlights of three coloured lights, both projections.
+TEST_F(PhongMapper, GeneralShaderWithSpecularMatchesTheExactSphere)
+{
+  const SceneSpec scene = ThreeColouredLights();
+  ASSERT_GT(WarmMaterial().Specular, 0);
+  for (const CameraSpec& camera : { Perspective(), Parallel() })
+  {
+    PhongScene phong(SphereMesh(256, 128), scene, WarmMaterial(), camera, VTK_PHONG);
     phong.Mapper->SpecializeShadersOff();
-    const Image general = phong.Render();
-    const std::string full =
-      phong.Mapper->GetFragmentShaderSource() + phong.Mapper->GetVertexShaderSource();
-    EXPECT_LE(MaxAbsDifference(specialised, general), 1) << "interpolation " << interpolation;
-    EXPECT_EQ(lean.find("phongSpecular("), std::string::npos);
-    EXPECT_NE(full.find("phongSpecular("), std::string::npos);
+    const Image image = phong.Render();
+    ASSERT_EQ(phong.Mapper->GetShaderConfiguration().find("phong"), 0u);
+    ExpectAgreement(image,
+      AnalyticSphere(scene, WarmMaterial(), camera, { 0, 0, 0 }, 0.5, Size, Size), 1.0, 3.0,
+      camera.Parallel ? "general shader, parallel" : "general shader, perspective");
   }
 }
 }
