@@ -300,6 +300,7 @@ struct PointNormalPass
   bool SpansReady = false;
   double ProgressStart = 0.0; // the pass reports progress start + scale * [0, 1]
   double ProgressScale = 1.0;
+  vtkIdType ForcedRangeSize = 0; // points per range for tests (0: RangeSize's choice)
 
   /// Polygons per block of the point pass.
   static constexpr vtkIdType PolyBlock = CellBlock;
@@ -447,6 +448,10 @@ struct PointNormalPass
   /// (exponent and count, grids, two-part sums: about 100 bytes), so their ranges are smaller.
   vtkIdType RangeSize(const std::vector<IdSpan>& spans, vtkIdType numPolys) const
   {
+    if (this->ForcedRangeSize > 0)
+    {
+      return this->ForcedRangeSize;
+    }
     return PointRangeSize(spans, numPolys, this->NumberOfPoints, phongvtk::Threads(numPolys),
       this->PieceInvariant ? 4096 : 16384);
   }
