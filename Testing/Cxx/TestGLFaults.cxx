@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <thread>
 
 namespace
 {
@@ -357,5 +358,52 @@ int NoOpenGLChild()
 TEST_F(GLFaults, NeitherOSMesaNorEGLIsAnErrorNotACrash)
 {
   EXPECT_EXIT(std::exit(NoOpenGLChild()), ::testing::ExitedWithCode(0), "");
+}
+
+//------------------------------------------------------------------------------
+// A context that cannot be made current: an EGL context is current on the thread that rendered
+// last, and EGL refuses it to another thread (EGL_BAD_ACCESS). The other thread's render is one
+// error and draws nothing; the first thread renders on.
+int ContextCurrentElsewhereChild()
+{
+  Failures fail;
+  auto window = vtkSmartPointer<vtkHeadlessEGLRenderWindow>::New();
+  auto left = SphereActor(false, -0.45);
+  auto right = SphereActor(false, 0.45);
+  TwoSpheres(window, left, right);
+  MessageCatcher messages;
+  window->Render();
+  const Image before = Capture(window);
+  if (IsBackground(before, BrokenX, Y))
+  {
+    fail("the first render drew nothing");
+  }
+  std::thread other(
+    [&]
+    {
+      for (int frame = 0; frame < 3; ++frame)
+      {
+        window->Render();
+      }
+    });
+  other.join();
+  if (Count(messages.Errors(), "cannot make the context current") != 1)
+  {
+    fail("expected one error saying the context cannot be made current, got " +
+      std::to_string(messages.Errors().size()) + " errors" +
+      (messages.Errors().empty() ? std::string() : ": " + messages.Errors()[0]));
+  }
+  window->Render();
+  const Image after = Capture(window);
+  if (after.Pixels != before.Pixels)
+  {
+    fail("the first thread's frame changed");
+  }
+  return fail.Count;
+}
+
+TEST_F(GLFaults, ContextCurrentOnAnotherThreadIsAnErrorNotACrash)
+{
+  EXPECT_EXIT(std::exit(ContextCurrentElsewhereChild()), ::testing::ExitedWithCode(0), "");
 }
 }
