@@ -11,6 +11,7 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
@@ -21,6 +22,7 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -300,6 +302,18 @@ void CheckNonSurfaces(vtkPolyData* input, CellCounts& counts)
   }
 }
 
+/// The input's cell ghost flags (its vtkGhostType array), or null when it has none.
+const unsigned char* GhostFlags(vtkPolyData* input)
+{
+  vtkUnsignedCharArray* ghosts = input->GetCellGhostArray();
+  if (!ghosts || ghosts->GetNumberOfTuples() != input->GetNumberOfCells() ||
+    ghosts->GetNumberOfComponents() != 1)
+  {
+    return nullptr;
+  }
+  return ghosts->GetPointer(0);
+}
+
 /// Everything for one point type. Returns false (and firstBadCell) for out-of-range point ids.
 template <class T>
 bool Execute(vtkVisibleArea* self, vtkPolyData* input, const T* points, const View& view,
@@ -335,9 +349,16 @@ bool Execute(vtkVisibleArea* self, vtkPolyData* input, const T* points, const Vi
       { input->GetStrips(), firstPoly + input->GetNumberOfPolys(), true } };
     phongvtk::EdgeSum<T> edges(points, input->GetNumberOfPoints());
     const unsigned char* s = status.data();
-    edges.Sum(
-      edges.NetEdges(
-        surfaces, [s](vtkIdType cell) { return s[cell] == phongvtk::StatusNonFinite; }, self),
+    // Ghost cells belong to another piece: its own sum counts them.
+    const unsigned char* ghosts = GhostFlags(input);
+    edges.Sum(edges.NetEdges(
+                surfaces,
+                [s, ghosts](vtkIdType cell)
+                {
+                  return s[cell] == phongvtk::StatusNonFinite ||
+                    (ghosts && (ghosts[cell] & vtkDataSetAttributes::DUPLICATECELL));
+                },
+                self),
       sumW);
     sumScale = edges.Scale;
   }
@@ -474,6 +495,21 @@ int vtkVisibleArea::RequestData(vtkInformation* vtkNotUsed(request),
   const vtkIdType numChunks = (numCells + chunk - 1) / chunk;
   std::vector<DD> partial(static_cast<std::size_t>(numChunks));
   const double* a = areas->GetPointer(0);
+  // Ghost cells belong to another piece: they count as zero here (so the pieces' totals add up
+  // to the whole mesh's) and keep their visible areas in the cell array.
+  std::vector<double> owned;
+  if (const unsigned char* ghosts = GhostFlags(input))
+  {
+    owned.assign(a, a + numCells);
+    for (vtkIdType c = 0; c < numCells; ++c)
+    {
+      if (ghosts[c] & vtkDataSetAttributes::DUPLICATECELL)
+      {
+        owned[static_cast<std::size_t>(c)] = 0.0;
+      }
+    }
+    a = owned.data();
+  }
   phongvtk::For(0, numChunks, numCells / 8,
     [&](vtkIdType begin, vtkIdType end)
     {

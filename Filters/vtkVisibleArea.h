@@ -17,7 +17,9 @@
  *   warning with their count).
  * - field data `TotalVisibleArea`: the sum of the positive visible areas, the area of the
  *   input's polygons seen from the front (also GetTotalVisibleArea()); saturated at the largest
- *   double when it exceeds the double range.
+ *   double when it exceeds the double range. Ghost cells (vtkGhostType DUPLICATECELL) keep
+ *   their visible area in the cell array but count neither here nor in the max visible area:
+ *   they belong to another piece, so the pieces' totals add up to the whole mesh's.
  * - field data `MaxVisibleAreaDirection` and `MaxVisibleArea` (ComputeMaxVisibleArea, on by
  *   default): `sum w / |sum w|`, the direction from which the polygons together (front minus
  *   back) look largest, and that area, `|sum w| / 2`. Sum w is evaluated from the edges the

@@ -5,11 +5,14 @@
 // removes the ghost cells it asked for on its own behalf (keeping those downstream asked for).
 #include "PhongVTKFilterTestSupport.h"
 #include "vtkPolygonNormals.h"
+#include "vtkVisibleArea.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
 #include "vtkExtractPolyDataPiece.h"
+#include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -18,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <random>
@@ -183,6 +187,63 @@ TEST(GhostCells, PiecesGetTheWholeMeshNormalsAndLoseTheGhostCellsTheyAskedFor)
     }
     // The pieces' own cells are the mesh's cells, once each.
     EXPECT_EQ(ownCells, whole->GetNumberOfCells()) << pieces << " pieces";
+  }
+}
+
+// vtkVisibleArea on pieces with ghost cells: the ghost cells keep their visible areas in the
+// cell array but count in neither the total nor the max visible area, so the pieces' totals add
+// up to the whole mesh's and their area vectors to the whole (closed) mesh's, zero.
+TEST(GhostCells, VisibleAreaTotalsOfPiecesAddUpToTheWholeMesh)
+{
+  auto whole = Mesh();
+  const double v[3] = { 0.3, -0.5, 0.8 };
+  auto run = [&v](vtkAlgorithmOutput* port, int piece, int pieces, int ghostLevels)
+  {
+    auto area = vtkSmartPointer<vtkVisibleArea>::New();
+    area->SetInputConnection(port);
+    area->SetAccuracy(vtkVisibleArea::EXACT);
+    area->SetViewDirection(v[0], v[1], v[2]);
+    area->UpdatePiece(piece, pieces, ghostLevels);
+    return area;
+  };
+  vtkNew<vtkVisibleArea> reference;
+  reference->SetInputData(whole);
+  reference->SetAccuracy(vtkVisibleArea::EXACT);
+  reference->SetViewDirection(v[0], v[1], v[2]);
+  reference->Update();
+  const double total = reference->GetTotalVisibleArea();
+  ASSERT_GT(total, 0.5);
+  for (int pieces : { 2, 3, 5 })
+  {
+    double sum = 0.0;
+    double sumW[3] = { 0.0, 0.0, 0.0 };
+    double withGhosts = 0.0;
+    for (int piece = 0; piece < pieces; ++piece)
+    {
+      vtkNew<vtkExtractPolyDataPiece> extract;
+      extract->SetInputData(whole);
+      auto area = run(extract->GetOutputPort(), piece, pieces, 1);
+      vtkPolyData* out = area->GetOutput();
+      ASSERT_GT(GhostCells(out), 0);
+      sum += area->GetTotalVisibleArea();
+      const double* direction = area->GetMaxVisibleAreaDirection();
+      for (int c = 0; c < 3; ++c)
+      {
+        sumW[c] += direction[c] * area->GetMaxVisibleArea();
+      }
+      // The ghost cells' visible areas are there (what the total leaves out).
+      auto* areas = vtkDoubleArray::SafeDownCast(out->GetCellData()->GetArray("VisibleArea"));
+      ASSERT_NE(areas, nullptr);
+      for (vtkIdType c = 0; c < areas->GetNumberOfTuples(); ++c)
+      {
+        withGhosts += std::max(0.0, areas->GetValue(c));
+      }
+    }
+    // Sums of a few hundred faithful values in another order: within 1e-13 relative.
+    EXPECT_NEAR(sum, total, 1e-13 * total) << pieces << " pieces";
+    EXPECT_GT(withGhosts, total * 1.01) << pieces << " pieces: the ghost cells are counted";
+    EXPECT_LT(std::sqrt(sumW[0] * sumW[0] + sumW[1] * sumW[1] + sumW[2] * sumW[2]), 1e-13 * total)
+      << pieces << " pieces";
   }
 }
 }
