@@ -140,6 +140,26 @@ inline vtkSmartPointer<vtkPolyData> SphereMesh(int resolution)
   return mesh;
 }
 
+/// A UV sphere (vtkSphereSource, double points) with every point moved by a deterministic
+/// random amount of relative size `jitter`: irregular but smooth triangles, no two points alike.
+inline vtkSmartPointer<vtkPolyData> JitteredSphere(int resolution, double jitter, unsigned seed = 7)
+{
+  auto mesh = SphereMesh(resolution);
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(-jitter, jitter);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    for (double& x : p)
+    {
+      x += uniform(random);
+    }
+    mesh->GetPoints()->SetPoint(i, p);
+  }
+  return mesh;
+}
+
 /// A sphere whose points are moved radially at random: many edges either side of 30 degrees.
 inline vtkSmartPointer<vtkPolyData> RoughSphere(
   int resolution, double roughness, unsigned seed = 11)

@@ -33,23 +33,11 @@ namespace
 // Float points, as vtkExtractPolyDataPiece writes its pieces' points.
 vtkSmartPointer<vtkPolyData> Mesh()
 {
-  auto mesh = phongvtk_test::SphereMesh(60);
+  auto mesh = phongvtk_test::JitteredSphere(60, 1e-3, 17);
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
   points->DeepCopy(mesh->GetPoints());
   mesh->SetPoints(points);
-  std::mt19937_64 random(17);
-  std::uniform_real_distribution<double> uniform(-1e-3, 1e-3);
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    mesh->GetPoint(i, p);
-    for (double& x : p)
-    {
-      x += uniform(random);
-    }
-    mesh->GetPoints()->SetPoint(i, p);
-  }
   return mesh;
 }
 

@@ -31,19 +31,8 @@ using phongvtk::Accuracy;
 // A jittered sphere, and the same surface with its cells and points shuffled.
 vtkSmartPointer<vtkPolyData> Sphere(int resolution, bool shuffled)
 {
-  auto mesh = phongvtk_test::SphereMesh(resolution);
-  std::mt19937_64 random(29);
-  std::uniform_real_distribution<double> jitter(-1e-3, 1e-3);
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    mesh->GetPoint(i, p);
-    for (double& x : p)
-    {
-      x += jitter(random);
-    }
-    mesh->GetPoints()->SetPoint(i, p);
-  }
+  auto mesh = phongvtk_test::JitteredSphere(resolution, 1e-3, 29);
+  std::mt19937_64 random(31);
   if (!shuffled)
   {
     return mesh;

@@ -79,25 +79,7 @@ const char* WeightingName(int weighting)
 //------------------------------------------------------------------------------
 // Building inputs.
 
-/// A UV sphere (vtkSphereSource, double points) with every point moved by a deterministic
-/// random amount of relative size `jitter`: irregular but smooth triangles.
-vtkSmartPointer<vtkPolyData> JitteredSphere(int resolution, double jitter, unsigned seed = 7)
-{
-  auto mesh = phongvtk_test::SphereMesh(resolution);
-  std::mt19937_64 random(seed);
-  std::uniform_real_distribution<double> uniform(-jitter, jitter);
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    mesh->GetPoint(i, p);
-    for (double& x : p)
-    {
-      x += uniform(random);
-    }
-    mesh->GetPoints()->SetPoint(i, p);
-  }
-  return mesh;
-}
+using phongvtk_test::JitteredSphere;
 
 /**
  * A bumpy height field with small integer coordinates in [-8, 8]: triangles and non-planar quads.
