@@ -72,6 +72,9 @@ public:
   {
   }
 
+  /// Points per range for tests (0: PointRangeSize's choice).
+  vtkIdType ForcedRangeSize = 0;
+
   /// The edges with a non-zero net count, ordered by (Low, High).
   template <class SkipFn>
   std::vector<NetEdge> NetEdges(const std::vector<SurfaceCells>& surfaces, const SkipFn& skip,
@@ -86,8 +89,9 @@ public:
       all.insert(all.end(), spans.back().begin(), spans.back().end());
       numCells += s.Cells ? s.Cells->GetNumberOfCells() : 0;
     }
-    const vtkIdType size =
-      PointRangeSize(all, numCells, this->NumberOfPoints, Threads(numCells), 16384);
+    const vtkIdType size = this->ForcedRangeSize > 0
+      ? this->ForcedRangeSize
+      : PointRangeSize(all, numCells, this->NumberOfPoints, Threads(numCells), 16384);
     const vtkIdType numRanges = (this->NumberOfPoints + size - 1) / size;
     std::vector<std::vector<NetEdge>> found(static_cast<std::size_t>(numRanges));
     struct Buffers

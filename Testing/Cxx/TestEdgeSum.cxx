@@ -86,11 +86,12 @@ struct Result
 };
 
 Result SumEdges(const std::vector<double>& xyz, vtkCellArray* polys, vtkCellArray* strips,
-  const std::vector<unsigned char>& skip = {})
+  const std::vector<unsigned char>& skip = {}, vtkIdType rangeSize = 0)
 {
   const vtkIdType numPolys = polys ? polys->GetNumberOfCells() : 0;
   std::vector<SurfaceCells> surfaces = { { polys, 0, false }, { strips, numPolys, true } };
   EdgeSum<double> edges(xyz.data(), static_cast<vtkIdType>(xyz.size() / 3));
+  edges.ForcedRangeSize = rangeSize;
   Result r;
   r.Net = edges.NetEdges(surfaces,
     [&skip](vtkIdType cell)
@@ -338,6 +339,14 @@ TEST(EdgeSumThreads, SameBitsForEveryBackendAndThreadCount)
     vtkSMPTools::Initialize(config.Threads);
     results.push_back(SumEdges(p.Points, polys, nullptr));
   }
+  // Forced range sizes, shared by two threads (on a few cores the sizes the sum picks barely
+  // move with the thread count).
+  for (vtkIdType size : { 997, 4099, 16384, 65537 })
+  {
+    ASSERT_TRUE(vtkSMPTools::SetBackend("STDThread"));
+    vtkSMPTools::Initialize(2);
+    results.push_back(SumEdges(p.Points, polys, nullptr, {}, size));
+  }
   vtkSMPTools::SetBackend(original.c_str());
   vtkSMPTools::Initialize(0);
   ASSERT_GT(results[0].Net.size(), EdgeSum<double>::Chunk); // several chunks
@@ -352,4 +361,23 @@ TEST(EdgeSumThreads, SameBitsForEveryBackendAndThreadCount)
   }
   double magnitude[3];
   ExpectNear(results[0], ExactSumW(p.Points, kept, magnitude), magnitude, "scrambled 400");
+}
+
+// Every range size, from one point a range (every boundary) to one range, on a small scrambled
+// patch: the same net edges and the same sum.
+TEST(EdgeSumThreads, SameBitsForEveryRangeSize)
+{
+  Patch p = ScrambledPatch(24, 5, 0.5);
+  auto polys = MakeCells(p.Triangles);
+  const vtkIdType n = static_cast<vtkIdType>(p.Points.size() / 3);
+  const Result whole = SumEdges(p.Points, polys, nullptr, {}, n);
+  ASSERT_FALSE(whole.Net.empty());
+  for (vtkIdType size : { vtkIdType(1), vtkIdType(2), vtkIdType(7), vtkIdType(61), n - 1 })
+  {
+    const Result r = SumEdges(p.Points, polys, nullptr, {}, size);
+    ASSERT_EQ(r.Net.size(), whole.Net.size()) << size;
+    EXPECT_EQ(std::memcmp(r.Net.data(), whole.Net.data(), whole.Net.size() * sizeof(NetEdge)), 0)
+      << size;
+    EXPECT_EQ(std::memcmp(r.Sum, whole.Sum, sizeof(whole.Sum)), 0) << size;
+  }
 }
