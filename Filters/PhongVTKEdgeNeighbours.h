@@ -16,13 +16,13 @@
 
 #include "PhongVTKCells.h"
 #include "PhongVTKParallel.h"
+#include "PhongVTKPolygonLinks.h"
 
 #include "vtkCellArray.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
-#include "vtkStaticCellLinksTemplate.h"
 
 #include <algorithm>
 #include <atomic>
@@ -36,11 +36,9 @@ namespace phongvtk
 {
 /**
  * The polygons around every point (polygon indices of `polys`; every point id valid), as ids of
- * type Id: `CompactPolygonLinks` (32 bits, VTK's STATIC_CELL_LINKS_UINT: half the memory and
- * half the time to build) when the mesh fits them (FitsCompactLinks), `PolygonLinks` otherwise.
+ * type Id (PhongVTKPolygonLinks.h): `CompactPolygonLinks` (32 bits: half the memory and half the
+ * time to build) when the mesh fits them (FitsCompactLinks), `PolygonLinks` otherwise.
  */
-template <class Id>
-using PolygonLinksOf = vtkStaticCellLinksTemplate<Id>;
 using PolygonLinks = PolygonLinksOf<vtkIdType>;
 using CompactPolygonLinks = PolygonLinksOf<unsigned int>;
 
@@ -57,18 +55,11 @@ inline bool FitsCompactLinks(vtkIdType numPoints, vtkCellArray* polys)
     polys->GetConnectivityArray()->GetNumberOfValues() < VTK_INT_MAX;
 }
 
-/**
- * The links of `polys`. On one thread VTK's serial build (no atomics; each point's polygons come
- * in increasing order, which the passes over them use); its threaded build otherwise.
- */
+/// The links of `polys` over the points `points`: each point's polygons in increasing order.
 template <class Id>
 void BuildPolygonLinks(vtkPoints* points, vtkCellArray* polys, PolygonLinksOf<Id>& links)
 {
-  vtkNew<vtkPolyData> surface;
-  surface->SetPoints(points);
-  surface->SetPolys(polys);
-  links.SetSequentialProcessing(Threads(polys->GetNumberOfCells()) == 1);
-  links.BuildLinks(surface);
+  links.Build(points->GetNumberOfPoints(), polys);
 }
 
 /**
