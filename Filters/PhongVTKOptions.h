@@ -1,7 +1,8 @@
 /**
  * @file PhongVTKOptions.h
- * @brief Private to PhongVTK::Filters: setters of enumerated options that reject an unknown value
- * with an error instead of clamping it silently to a neighbouring mode.
+ * @brief Part of PhongVTK::Filters' public headers: setters of enumerated options that reject an
+ * unknown value with an error instead of clamping it silently to a neighbouring mode (the
+ * filters' and the ParaView plugin's representation's).
  */
 #ifndef PhongVTKOptions_h
 #define PhongVTKOptions_h

@@ -31,10 +31,14 @@ void vtkPhongPolyDataMapper::ApplyPreset(vtkProperty* property, int preset)
   {
     return;
   }
-  if (preset < PLASTIC || preset > MATTE)
+  if (!GetPresetName(preset))
   {
-    vtkGenericWarningMacro("Unknown material preset " << preset << ": use PLASTIC (0), METAL (1) "
-                                                      << "or MATTE (2).");
+    vtkGenericWarningMacro("Unknown material preset "
+      << preset << ": use CUSTOM (0), PLASTIC (1), METAL (2) or MATTE (3).");
+    return;
+  }
+  if (preset == CUSTOM)
+  {
     return;
   }
   // Coefficients chosen so that ambient + diffuse stay at most 1 under one white light of
@@ -45,7 +49,7 @@ void vtkPhongPolyDataMapper::ApplyPreset(vtkProperty* property, int preset)
     double Diffuse, Specular, SpecularPower;
   };
   constexpr Coefficients presets[] = { { 0.8, 0.3, 30.0 }, { 0.45, 0.6, 60.0 }, { 0.9, 0.0, 1.0 } };
-  const Coefficients& c = presets[preset];
+  const Coefficients& c = presets[preset - PLASTIC];
   double colour[3];
   property->GetDiffuseColor(colour);
   // ka = kd as colours; the ambient coefficient is the strength of the ambient light's share.
@@ -66,16 +70,22 @@ void vtkPhongPolyDataMapper::ApplyPreset(vtkProperty* property, int preset)
 
 bool vtkPhongPolyDataMapper::ApplyPreset(vtkProperty* property, const char* name)
 {
-  const char* names[] = { "plastic", "metal", "matte" };
-  for (int preset = PLASTIC; preset <= MATTE; ++preset)
+  for (int preset = CUSTOM; preset <= MATTE; ++preset)
   {
-    if (name && std::strcmp(name, names[preset]) == 0)
+    if (name && std::strcmp(name, GetPresetName(preset)) == 0)
     {
       ApplyPreset(property, preset);
       return true;
     }
   }
   return false;
+}
+
+const char* vtkPhongPolyDataMapper::GetPresetName(int preset)
+{
+  constexpr const char* names[] = { "custom", "plastic", "metal", "matte" };
+  static_assert(CUSTOM == 0 && MATTE == 3, "names follow MaterialPreset's values");
+  return preset >= CUSTOM && preset <= MATTE ? names[preset] : nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -91,19 +91,28 @@ public:
    * - METAL: Diffuse 0.45, highlight tinted by the surface (SpecularColor C, Specular 0.6,
    *   SpecularPower 60);
    * - MATTE: Diffuse 0.9, no highlight (Specular 0).
-   * An unknown preset changes nothing (and warns).
+   * CUSTOM leaves the property as it is: its own coefficients and colours. An unknown preset
+   * changes nothing (and warns). These values are also the Phong Surface representation's
+   * MaterialPreset property in ParaView.
    */
   enum MaterialPreset
   {
-    PLASTIC = 0,
-    METAL = 1,
-    MATTE = 2
+    CUSTOM = 0,
+    PLASTIC = 1,
+    METAL = 2,
+    MATTE = 3
   };
   static void ApplyPreset(vtkProperty* property, int preset);
   /**
-   * The same by name ("plastic", "metal", "matte"); false (property unchanged) for another name.
+   * The same by name ("custom", "plastic", "metal", "matte"); false (property unchanged) for
+   * another name.
    */
   static bool ApplyPreset(vtkProperty* property, const char* name);
+  /**
+   * The name of a MaterialPreset value ("custom", "plastic", "metal", "matte"), or nullptr for
+   * another value.
+   */
+  static const char* GetPresetName(int preset);
 
   /**
    * The GLSL of the program that last drew this mapper's polygons (vertex, fragment): for

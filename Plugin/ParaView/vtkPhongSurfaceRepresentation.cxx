@@ -13,7 +13,11 @@ vtkStandardNewMacro(vtkPhongSurfaceRepresentation);
 namespace
 {
 constexpr const char* const ShadingNames[] = { "Flat", "Gouraud", "Phong" };
+// The names of vtkPhongPolyDataMapper::MaterialPreset's values, as the panel shows them.
 constexpr const char* const PresetNames[] = { "Custom", "Plastic", "Metal", "Matte" };
+static_assert(vtkPhongPolyDataMapper::CUSTOM == 0 && vtkPhongPolyDataMapper::PLASTIC == 1 &&
+    vtkPhongPolyDataMapper::METAL == 2 && vtkPhongPolyDataMapper::MATTE == 3,
+  "PresetNames follow vtkPhongPolyDataMapper::MaterialPreset");
 constexpr int Interpolations[] = { VTK_FLAT, VTK_GOURAUD, VTK_PHONG };
 }
 
@@ -126,10 +130,7 @@ void vtkPhongSurfaceRepresentation::UpdateColoringParameters()
   // preset are applied after it so that they win whatever order ParaView pushed properties in.
   this->Superclass::UpdateColoringParameters();
   this->Property->SetInterpolation(Interpolations[this->Shading]);
-  if (this->MaterialPreset != CUSTOM)
-  {
-    vtkPhongPolyDataMapper::ApplyPreset(this->Property, this->MaterialPreset - 1);
-  }
+  vtkPhongPolyDataMapper::ApplyPreset(this->Property, this->MaterialPreset); // CUSTOM: as it is
 }
 
 //------------------------------------------------------------------------------

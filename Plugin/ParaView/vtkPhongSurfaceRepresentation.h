@@ -35,14 +35,6 @@ public:
     PHONG = 2
   };
 
-  enum MaterialPresets
-  {
-    CUSTOM = 0, ///< the representation's own coefficients and colours
-    PLASTIC = 1,
-    METAL = 2,
-    MATTE = 3
-  };
-
   ///@{
   /**
    * Shading: FLAT (one normal per cell), GOURAUD (the model at the vertices, colours
@@ -54,9 +46,10 @@ public:
 
   ///@{
   /**
-   * Material preset (vtkPhongPolyDataMapper::ApplyPreset on the diffuse colour), or CUSTOM for
-   * the representation's own coefficients. A preset overrides Ambient, Diffuse, Specular,
-   * SpecularPower, AmbientColor and SpecularColor. Default is CUSTOM.
+   * Material preset, a vtkPhongPolyDataMapper::MaterialPreset value (ApplyPreset on the diffuse
+   * colour): CUSTOM (0) for the representation's own coefficients, PLASTIC (1), METAL (2) or
+   * MATTE (3). A preset overrides Ambient, Diffuse, Specular, SpecularPower, AmbientColor and
+   * SpecularColor. Default is CUSTOM.
    */
   void SetMaterialPreset(int preset);
   vtkGetMacro(MaterialPreset, int);
@@ -94,7 +87,7 @@ protected:
   void UpdateColoringParameters() override;
 
   int Shading = PHONG;
-  int MaterialPreset = CUSTOM;
+  int MaterialPreset = 0; // vtkPhongPolyDataMapper::CUSTOM
   bool SceneAmbient = false;
 
 private:

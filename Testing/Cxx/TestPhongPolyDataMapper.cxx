@@ -527,6 +527,54 @@ TEST_F(PhongMapper, PresetsSetTheMaterial)
   EXPECT_EQ(p->GetDiffuse(), 0.55) << "an unknown preset changes nothing";
 }
 
+// One enumeration of presets (the mapper's, also the ParaView representation's MaterialPreset):
+// CUSTOM (0) keeps the property, each other value is its named preset, other values warn and
+// change nothing.
+TEST_F(PhongMapper, PresetValuesAreCustomThenTheNamedPresets)
+{
+  EXPECT_STREQ(vtkPhongPolyDataMapper::GetPresetName(0), "custom");
+  EXPECT_STREQ(vtkPhongPolyDataMapper::GetPresetName(vtkPhongPolyDataMapper::PLASTIC), "plastic");
+  EXPECT_STREQ(vtkPhongPolyDataMapper::GetPresetName(vtkPhongPolyDataMapper::METAL), "metal");
+  EXPECT_STREQ(vtkPhongPolyDataMapper::GetPresetName(vtkPhongPolyDataMapper::MATTE), "matte");
+  EXPECT_EQ(vtkPhongPolyDataMapper::GetPresetName(-1), nullptr);
+  EXPECT_EQ(vtkPhongPolyDataMapper::GetPresetName(4), nullptr);
+  auto material = [](vtkProperty* p)
+  {
+    return std::vector<double>{ p->GetAmbient(), p->GetDiffuse(), p->GetSpecular(),
+      p->GetSpecularPower(), p->GetAmbientColor()[0], p->GetSpecularColor()[1] };
+  };
+  vtkNew<vtkProperty> own;
+  own->SetDiffuseColor(0.8, 0.2, 0.1);
+  own->SetAmbient(0.7);
+  own->SetDiffuse(0.55);
+  own->SetSpecular(0.25);
+  own->SetSpecularPower(12.0);
+  own->SetSpecularColor(0.3, 0.4, 0.5);
+  const std::vector<double> before = material(own);
+  vtkPhongPolyDataMapper::ApplyPreset(own, vtkPhongPolyDataMapper::CUSTOM);
+  EXPECT_EQ(material(own), before) << "CUSTOM keeps the property's own material";
+  EXPECT_TRUE(vtkPhongPolyDataMapper::ApplyPreset(own, "custom"));
+  EXPECT_EQ(material(own), before);
+  for (int preset = vtkPhongPolyDataMapper::PLASTIC; preset <= vtkPhongPolyDataMapper::MATTE;
+       ++preset)
+  {
+    vtkNew<vtkProperty> byValue, byName;
+    byValue->DeepCopy(own);
+    byName->DeepCopy(own);
+    vtkPhongPolyDataMapper::ApplyPreset(byValue, preset);
+    ASSERT_TRUE(
+      vtkPhongPolyDataMapper::ApplyPreset(byName, vtkPhongPolyDataMapper::GetPresetName(preset)));
+    EXPECT_EQ(material(byValue), material(byName)) << preset;
+    EXPECT_NE(material(byValue), before) << preset;
+  }
+  MessageCatcher messages;
+  vtkPhongPolyDataMapper::ApplyPreset(own, 4);
+  vtkPhongPolyDataMapper::ApplyPreset(own, -1);
+  EXPECT_EQ(material(own), before) << "an unknown value changes nothing";
+  ASSERT_EQ(messages.Warnings().size(), 2u);
+  EXPECT_NE(messages.Warnings()[0].find("CUSTOM (0)"), std::string::npos);
+}
+
 // Scene ambient: Ia = (sum of Id) * mean kd of the visible actors.
 TEST_F(PhongMapper, SceneAmbientIsTheLightTimesTheMeanDiffuseReflectance)
 {
