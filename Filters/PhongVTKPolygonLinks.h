@@ -57,7 +57,10 @@ public:
     this->LinksSize = polys->GetNumberOfConnectivityIds();
     if (blocks <= 0)
     {
-      blocks = Threads(numPolys);
+      // A block's counters (one a point) may not outgrow the links themselves: a mesh with
+      // many unused points is built on fewer blocks.
+      blocks =
+        std::min<vtkIdType>(Threads(numPolys), this->LinksSize / std::max<vtkIdType>(numPoints, 1));
     }
     blocks =
       std::max<vtkIdType>(1, std::min({ blocks, MaxBlocks, std::max<vtkIdType>(numPolys, 1) }));
@@ -153,6 +156,7 @@ private:
       }
     }
     this->Offsets[n] = start;
+    this->Offsets[n + 1] = start; // as the serial build leaves it
     Id* links = this->Links.get();
     vtkSMPTools::For(0, blocks, 1,
       [&](vtkIdType begin, vtkIdType end)

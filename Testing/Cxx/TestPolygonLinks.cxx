@@ -80,6 +80,7 @@ void ExpectLinks(vtkIdType numPoints, const Polygons& polygons, bool bits64, vtk
     }
     offset += static_cast<vtkIdType>(want.size());
   }
+  ASSERT_EQ(static_cast<vtkIdType>(links.GetOffset(numPoints)), links.GetLinksSize());
 }
 
 void ExpectLinksEveryWay(vtkIdType numPoints, const Polygons& polygons, const std::string& what)
