@@ -40,6 +40,7 @@
 #ifndef PhongVTKAreaVector_h
 #define PhongVTKAreaVector_h
 
+#include "PhongVTKKernelNamespace.h"
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -53,8 +54,18 @@
 #include <immintrin.h>
 #endif
 
+// Clang keeps this header's arithmetic uncontracted even where the includer contracts (its
+// decision is made per expression, before inlining); GCC's is the flag (PhongVTKKernelNamespace.h).
+#if defined(__clang__)
+#pragma float_control(push)
+#pragma clang fp contract(off)
+#endif
+
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 
 /// Accuracy modes, numbered as vtkPolygonNormals::FAST ... EXACT.
 enum class Accuracy : int
@@ -132,7 +143,7 @@ PHONGVTK_INLINE void FastTwoSum(double a, double b, double& s, double& e)
 
 PHONGVTK_INLINE double Fma(double a, double b, double c)
 {
-#if defined(__FMA__)
+#if defined(PHONGVTK_HAVE_AVX_FMA)
   return __builtin_fma(a, b, c);
 #else
   return std::fma(a, b, c);
@@ -164,9 +175,12 @@ PHONGVTK_INLINE DD Add(DD a, DD b)
   return { s, e };
 }
 
-/// Three coordinates (x, y, z, 0) in one SIMD register (GCC/Clang vector extension).
-typedef double V4 __attribute__((vector_size(32)));
-typedef long long V4i __attribute__((vector_size(32)));
+/// Three coordinates (x, y, z, 0) in one SIMD register (GCC/Clang vector extension). The
+/// alignment is explicit: GCC aligns a 32-byte vector to 32 bytes only where AVX is enabled and
+/// to 16 elsewhere, and the two kernel sets (PhongVTKKernelNamespace.h) share the standard
+/// library's allocators, which must agree with the kernels on the alignment of what holds them.
+typedef double V4 __attribute__((vector_size(32), aligned(32)));
+typedef long long V4i __attribute__((vector_size(32), aligned(32)));
 
 template <class T>
 PHONGVTK_INLINE V4 Load(const T* p)
@@ -199,7 +213,7 @@ PHONGVTK_INLINE V4 Abs(V4 v)
 
 PHONGVTK_INLINE V4 Fma(V4 a, V4 b, V4 c)
 {
-#if defined(__FMA__) && defined(__AVX__)
+#if defined(PHONGVTK_HAVE_AVX_FMA)
   return reinterpret_cast<V4>(_mm256_fmadd_pd(
     reinterpret_cast<__m256d>(a), reinterpret_cast<__m256d>(b), reinterpret_cast<__m256d>(c)));
 #else
@@ -257,6 +271,19 @@ PHONGVTK_INLINE int Exponent2(double m)
   std::memcpy(&bits, &m, sizeof(bits));
   const int biased = static_cast<int>((bits >> 52) & 0x7ff);
   return biased != 0 ? biased - 1023 : std::ilogb(m);
+}
+
+/**
+ * x rounded to float (and back to double). Out of line on purpose: GCC 12 at -O3 vectorises a
+ * pair of such roundings written in place (`n[c] = static_cast<float>(n[c])` after n was
+ * stored) and drops them, leaving FAST's scaled-path normals unrounded for two of three
+ * components, and then only in some of the places it inlines them (found by TestKernelSets;
+ * reproduced with g++ 12.2 -O3 on FinishScaled alone, not at -O2 nor with Clang). The slow paths
+ * that use it are rare; a call costs nothing there.
+ */
+__attribute__((noinline)) inline double RoundToFloat(double x)
+{
+  return static_cast<float>(x);
 }
 
 /**
@@ -504,7 +531,7 @@ struct FastArith
     for (int c = 0; c < 3; ++c)
     {
       out.Vector[c] = Scale2(w[c], -k);
-      out.Normal[c] = static_cast<float>(out.Normal[c]);
+      out.Normal[c] = RoundToFloat(out.Normal[c]);
     }
     out.Exponent = k;
     out.Status = StatusOk;
@@ -824,15 +851,13 @@ inline void FinishScaled(const double w[3], const int unscale[3], AreaVector& ou
     v[c] = w[c] == 0.0 ? 0.0 : std::ldexp(w[c], unscale[c] - top);
   }
   int k;
-  NormalizeDouble(v, out.Normal, out.Length, k);
+  double n[3];
+  NormalizeDouble(v, n, out.Length, k);
   for (int c = 0; c < 3; ++c)
   {
     out.Vector[c] = v[c];
     out.VectorLo[c] = 0.0;
-    if (single)
-    {
-      out.Normal[c] = static_cast<float>(out.Normal[c]);
-    }
+    out.Normal[c] = single ? RoundToFloat(n[c]) : n[c];
   }
   out.Exponent = top + k;
   out.Status = StatusOk;
@@ -960,7 +985,7 @@ namespace detail
 /// Correctly rounded square root of each lane.
 PHONGVTK_INLINE V4 Sqrt(V4 v)
 {
-#if defined(__AVX__)
+#if defined(PHONGVTK_HAVE_AVX_FMA)
   return reinterpret_cast<V4>(_mm256_sqrt_pd(reinterpret_cast<__m256d>(v)));
 #else
   return V4{ std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2]), std::sqrt(v[3]) };
@@ -1145,6 +1170,19 @@ namespace detail
 typedef float V4f __attribute__((vector_size(16)));
 typedef int V4fi __attribute__((vector_size(16)));
 
+/// The four-lane type of element type E (V4f for float, V4 for double). A trait rather than
+/// std::conditional_t, which would drop V4's alignment attribute.
+template <class E>
+struct LanesOf
+{
+  using Type = V4;
+};
+template <>
+struct LanesOf<float>
+{
+  using Type = V4f;
+};
+
 PHONGVTK_INLINE V4f Abs(V4f v)
 {
   return reinterpret_cast<V4f>(reinterpret_cast<V4fi>(v) & 0x7fffffff); // clears the sign bit
@@ -1221,7 +1259,7 @@ template <class T>
 PHONGVTK_INLINE void FastTriangles4(const T* const corner[3][4], TriangleLanes& out)
 {
   // Differences in the points' own precision, then float (FastArith::Difference).
-  using Point = std::conditional_t<std::is_same<T, float>::value, V4f, V4>;
+  using Point = typename LanesOf<T>::Type;
   V4f a[3], b[3], w[3];
   for (int c = 0; c < 3; ++c)
   {
@@ -1369,7 +1407,7 @@ PHONGVTK_INLINE void CertifiedAreaVectors4(const T* const corner[3][4], Certifie
 template <class O>
 PHONGVTK_INLINE void StoreNormals4(O* out, const detail::V4 n[3])
 {
-  using Vec = std::conditional_t<std::is_same<O, float>::value, detail::V4f, detail::V4>;
+  using Vec = typename detail::LanesOf<O>::Type;
   const Vec x = __builtin_convertvector(n[0], Vec);
   const Vec y = __builtin_convertvector(n[1], Vec);
   const Vec z = __builtin_convertvector(n[2], Vec);
@@ -1513,7 +1551,13 @@ inline std::int64_t StripOutlineIndex(std::int64_t i, std::int64_t k)
   return 2 * (even - (i - odd - 1));
 }
 
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
+
+#if defined(__clang__)
+#pragma float_control(pop)
+#endif
 
 #endif
 // VTK-HeaderTest-Exclude: PhongVTKAreaVector.h

@@ -36,6 +36,7 @@
 #ifndef PhongVTKAutoOrient_h
 #define PhongVTKAutoOrient_h
 
+#include "PhongVTKKernelNamespace.h"
 #include "PhongVTKOrientation.h"
 #include "PhongVTKParallel.h"
 
@@ -52,6 +53,9 @@
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 /// What AutoOrient found and did, for the filter's report.
 struct AutoOrientReport
 {
@@ -546,6 +550,8 @@ AutoOrientReport AutoOrient(const T* points, vtkIdType numPolys, const Offsets* 
   return report;
 }
 
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

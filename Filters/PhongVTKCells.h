@@ -6,17 +6,23 @@
 #ifndef PhongVTKCells_h
 #define PhongVTKCells_h
 
+#include "PhongVTKKernelNamespace.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <cstdint>
 #include <type_traits>
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 /// Whether the n point ids all lie in [0, numberOfPoints) (a negative id wraps to a huge one).
 template <class Connectivity>
 inline bool ValidIds(const Connectivity* ids, std::int64_t n, vtkIdType numberOfPoints)
@@ -43,6 +49,18 @@ inline vtkSmartPointer<vtkDataArray> KernelCoordinates(vtkPoints* points)
   auto converted = vtkSmartPointer<vtkDoubleArray>::New();
   converted->DeepCopy(data);
   return converted;
+}
+
+/// The cell ghost flags of `input` (its vtkGhostType array), or null when it has none.
+inline const unsigned char* CellGhostFlags(vtkPolyData* input)
+{
+  vtkUnsignedCharArray* ghosts = input->GetCellGhostArray();
+  if (!ghosts || ghosts->GetNumberOfTuples() != input->GetNumberOfCells() ||
+    ghosts->GetNumberOfComponents() != 1)
+  {
+    return nullptr;
+  }
+  return ghosts->GetPointer(0);
 }
 
 /// vtkCellArray::Visit functor handing the typed offsets and connectivity pointers to `fn`.
@@ -127,6 +145,8 @@ inline bool AreFourValidTriangles(const Offsets* offsets, const Connectivity* co
     ValidIds(connectivity + offsets[cell], 12, numberOfPoints);
 }
 
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

@@ -15,6 +15,7 @@
 #define PhongVTKEdgeNeighbours_h
 
 #include "PhongVTKCells.h"
+#include "PhongVTKKernelNamespace.h"
 #include "PhongVTKParallel.h"
 #include "PhongVTKPolygonLinks.h"
 
@@ -34,6 +35,9 @@
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 /**
  * The polygons around every point (polygon indices of `polys`; every point id valid), as ids of
  * type Id (PhongVTKPolygonLinks.h): `CompactPolygonLinks` (32 bits: half the memory and half the
@@ -711,6 +715,8 @@ std::vector<N> EdgeNeighbours(vtkIdType numPoints, vtkCellArray* polys, Links& l
   return neighbours;
 }
 
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

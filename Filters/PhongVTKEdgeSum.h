@@ -20,6 +20,7 @@
 
 #include "PhongVTKAreaVector.h"
 #include "PhongVTKCells.h"
+#include "PhongVTKKernelNamespace.h"
 #include "PhongVTKParallel.h"
 #include "PhongVTKPointRanges.h"
 
@@ -38,6 +39,9 @@
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 /// An undirected edge that does not cancel: Net times the directed edge Low -> High (Net < 0:
 /// High -> Low), Low < High.
 struct NetEdge
@@ -340,6 +344,8 @@ private:
   const T* Points;
   vtkIdType NumberOfPoints;
 };
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

@@ -21,6 +21,9 @@
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 namespace detail
 {
 namespace
@@ -352,4 +355,6 @@ int ExactOrientedFluxSign(const double* xyz, const std::int64_t* sizes, const si
 }
 
 } // namespace detail
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk

@@ -14,10 +14,14 @@
 #ifndef PhongVTKFeatureAngle_h
 #define PhongVTKFeatureAngle_h
 
+#include "PhongVTKKernelNamespace.h"
 #include <cstdint>
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 /**
  * The error of fl(n1.n2) against the exact n1e.n2e when every component of n1 and n2 is within
  * 1 ulp of the exact unit normals' (EXACT's faithful normals): each component is off by at most
@@ -77,6 +81,8 @@ namespace detail
 bool ExactFeatureEdgeIsSharp(
   const double* xyz1, std::int64_t n1, const double* xyz2, std::int64_t n2, double c);
 }
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

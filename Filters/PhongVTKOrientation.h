@@ -18,6 +18,7 @@
 
 #include "PhongVTKCells.h"
 #include "PhongVTKEdgeNeighbours.h"
+#include "PhongVTKKernelNamespace.h"
 #include "PhongVTKParallel.h"
 
 #include "vtkCellArray.h"
@@ -31,6 +32,9 @@
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 /// Which polygons to reverse, and what could not be made consistent.
 struct Orientation
 {
@@ -231,6 +235,8 @@ inline vtkSmartPointer<vtkCellArray> ReversedPolygons(
   return out;
 }
 
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

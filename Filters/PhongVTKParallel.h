@@ -11,6 +11,7 @@
 #ifndef PhongVTKParallel_h
 #define PhongVTKParallel_h
 
+#include "PhongVTKKernelNamespace.h"
 #include "vtkSMPTools.h"
 #include "vtkType.h"
 
@@ -18,6 +19,9 @@
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 /// Work (in polygon-sized items) below which a pass runs on the calling thread.
 constexpr vtkIdType SerialWork = 131072;
 
@@ -80,6 +84,8 @@ void For(vtkIdType begin, vtkIdType end, vtkIdType work, F&& f, vtkIdType parall
     vtkSMPTools::For(begin, end, f);
   }
 }
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

@@ -10,6 +10,7 @@
 
 #include "PhongVTKAreaVector.h"
 #include "PhongVTKCells.h"
+#include "PhongVTKKernelNamespace.h"
 #include "PhongVTKParallel.h"
 #include "PhongVTKPointRanges.h"
 #include "PhongVTKPointSums.h"
@@ -30,6 +31,9 @@
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 
 /**
  * The edge from v to q scaled by 2^-k so that its largest component lies in [1, 2); returns k,
@@ -581,6 +585,8 @@ struct PointNormalPass
   }
 };
 
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

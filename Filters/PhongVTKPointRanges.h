@@ -12,6 +12,7 @@
 #define PhongVTKPointRanges_h
 
 #include "PhongVTKCells.h"
+#include "PhongVTKKernelNamespace.h"
 #include "PhongVTKParallel.h"
 
 #include "vtkCellArray.h"
@@ -24,6 +25,9 @@
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 /// Cells per block of a span.
 constexpr vtkIdType CellBlock = 1024;
 
@@ -141,6 +145,8 @@ inline vtkIdType PointRangeSize(const std::vector<IdSpan>& spans, vtkIdType numC
   }
   return widest;
 }
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

@@ -19,6 +19,7 @@
 #define PhongVTKPointSums_h
 
 #include "PhongVTKAreaVector.h"
+#include "PhongVTKKernelNamespace.h"
 
 #include "vtkType.h"
 
@@ -31,6 +32,9 @@
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 
 /**
  * A point normal sum in cell order with a binary exponent of its own: the value is S * 2^E.
@@ -291,6 +295,8 @@ private:
   std::vector<Magic> Grid; // each point's rounding constants
 };
 
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

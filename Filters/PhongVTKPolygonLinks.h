@@ -21,6 +21,7 @@
 #define PhongVTKPolygonLinks_h
 
 #include "PhongVTKCells.h"
+#include "PhongVTKKernelNamespace.h"
 #include "PhongVTKParallel.h"
 
 #include "vtkCellArray.h"
@@ -34,6 +35,9 @@
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 /**
  * The polygons around every point of a cell array, as ids of type Id (unsigned int where every
  * polygon and corner id fits 32 bits, FitsCompactLinks; vtkIdType otherwise).
@@ -181,6 +185,8 @@ private:
   std::unique_ptr<Id[]> Offsets;
   std::unique_ptr<Id[]> Links;
 };
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

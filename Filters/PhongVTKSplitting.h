@@ -19,6 +19,7 @@
 
 #include "PhongVTKCells.h"
 #include "PhongVTKEdgeNeighbours.h"
+#include "PhongVTKKernelNamespace.h"
 #include "PhongVTKParallel.h"
 
 #include "vtkCellArray.h"
@@ -41,6 +42,9 @@
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 /// The result of splitting: the polygons with their new point ids, and the input point of every
 /// appended copy (copy i is output point numberOfPoints + i).
 struct SplitPolygons
@@ -462,6 +466,8 @@ inline vtkSmartPointer<vtkPolyData> MeshWithCopies(
   return out;
 }
 
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

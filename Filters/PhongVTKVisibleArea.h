@@ -23,6 +23,7 @@
 #define PhongVTKVisibleArea_h
 
 #include "PhongVTKAreaVector.h"
+#include "PhongVTKKernelNamespace.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +33,9 @@
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 
 /// What the polygons are seen from.
 struct View
@@ -691,6 +695,8 @@ VisibleAreaResult ComputeVisibleArea(const VertexFn& vertex, std::int64_t n, con
   }
 }
 
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

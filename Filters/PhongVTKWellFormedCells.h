@@ -13,6 +13,7 @@
 #ifndef PhongVTKWellFormedCells_h
 #define PhongVTKWellFormedCells_h
 
+#include "PhongVTKKernelNamespace.h"
 #include "PhongVTKParallel.h"
 
 #include "vtkCellArray.h"
@@ -25,6 +26,9 @@
 
 namespace phongvtk
 {
+inline namespace PHONGVTK_KERNELS
+{
+PHONGVTK_KERNEL_TARGET_BEGIN
 /// What the filters say after "Cell <id>" when FirstMalformedCell finds one.
 constexpr const char* MalformedCellReason =
   " has no extent in the input's cell array: its offsets are corrupt (they must start at 0, "
@@ -123,6 +127,8 @@ inline vtkIdType FirstMalformedCell(vtkPolyData* mesh)
   return -1;
 }
 
+PHONGVTK_KERNEL_TARGET_END
+} // namespace PHONGVTK_KERNELS
 } // namespace phongvtk
 
 #endif

@@ -2422,3 +2422,62 @@ INSTANTIATE_TEST_SUITE_P(Scales, PolygonNormalsExtremes,
     Extreme{ "float_scale_2m140", 0x1p-140, 0.0, VTK_FLOAT },
     Extreme{ "float_scale_2p120", 0x1p120, 0.0, VTK_FLOAT }),
   ExtremeName);
+
+namespace
+{
+// FAST normals are float values whichever path a polygon takes. A heptagon at 2^529, whose float
+// differences overflow (the scaled path), and the same heptagon scaled to 2^-529 and to 1: GCC
+// 12.2 at -O3 once dropped the rounding of two components on the scaled path (see RoundToFloat
+// in PhongVTKAreaVector.h), in the cell pass and in the point pass alike.
+TEST(PolygonNormals, FastNormalsAreFloatsOnEveryPath)
+{
+  const char* const hex[7][3] = {
+    { "-0x1.48e0621f84714p+529", "0x1.b71caf989ce7p+526", "0x1.b8efadae91848p+529" },
+    { "-0x1.75d4faf9d85e4p+529", "-0x1.2651a692bee86p+529", "-0x1.349ddf579829cp+528" },
+    { "0x1.80c75d5325a2p+529", "0x1.a6f0db9e136bp+529", "0x1.fd5e80828668cp+528" },
+    { "-0x1.b4c2e84b5849fp+529", "-0x1.6a144a43eabbep+529", "0x1.0ed9b6761afp+524" },
+    { "0x1.a99c838170c0cp+528", "0x1.335ad810e76fep+529", "0x1.3c40aab77e72p+529" },
+    { "-0x1.ae1dc36588af8p+526", "0x1.aa5da84356aap+528", "-0x1.5ac4e22f6d99p+526" },
+    { "-0x1.75d31ec760b44p+528", "0x1.57d12c44e7e2cp+528", "0x1.64058264e609ap+529" },
+  };
+  for (int shift : { 0, -529, -1058 })
+  {
+    std::vector<Point> points;
+    for (const auto& p : hex)
+    {
+      points.push_back({ std::ldexp(std::strtod(p[0], nullptr), shift),
+        std::ldexp(std::strtod(p[1], nullptr), shift),
+        std::ldexp(std::strtod(p[2], nullptr), shift) });
+    }
+    Cells cells;
+    cells.Polys = { { 0, 1, 2, 3, 4, 5, 6 } };
+    auto out = phongvtk_test::RunFilter(MakePolyData(points, cells),
+      [](vtkPolygonNormals* f)
+      {
+        f->SetAccuracy(vtkPolygonNormals::FAST);
+        f->SetComputePointNormals(true);
+        f->SetPointWeighting(vtkPolygonNormals::UNIFORM);
+        f->SetOutputPrecision(vtkPolygonNormals::DOUBLE_PRECISION);
+      });
+    double n[3];
+    out->GetCellData()->GetNormals()->GetTuple(0, n);
+    for (double x : n)
+    {
+      EXPECT_EQ(x, static_cast<double>(static_cast<float>(x)))
+        << "shift " << shift << ": " << std::hexfloat << x << " is not a float";
+    }
+    // UNIFORM: every point's normal is the one face's float normal, normalised in double.
+    double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (vtkIdType p = 0; p < 7; ++p)
+    {
+      double m[3];
+      out->GetPointData()->GetNormals()->GetTuple(p, m);
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_EQ(m[c], n[c] / length)
+          << "shift " << shift << ", point " << p << ", component " << c;
+      }
+    }
+  }
+}
+} // namespace
