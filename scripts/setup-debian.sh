@@ -40,8 +40,8 @@ case "$PHONGVTK_FLAVOUR" in
 esac
 
 packages=(
-  # toolchain
-  g++ cmake ninja-build clang-format
+  # toolchain; Clang 14 builds the Filters a second time (Testing/Clang)
+  g++ cmake ninja-build clang-format clang-14
   "${flavour[@]}"
   # headless rendering: OSMesa and EGL (Mesa llvmpipe), no X server
   libosmesa6-dev libegl-dev libgl-dev libx11-dev libglew-dev

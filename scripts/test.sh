@@ -5,11 +5,17 @@
 #   scripts/test.sh --sanitize [CTEST ARGS...]   the modules and the C++ tests built with
 #                                                AddressSanitizer + UndefinedBehaviorSanitizer
 #                                                (build-sanitize/; Testing/Sanitizers/)
+#   scripts/test.sh --clang [CTEST ARGS...]      the Filters module and its C++ tests built with
+#                                                Clang 14 (build-clang/; Testing/Clang/)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 if [ "${1:-}" = "--sanitize" ]; then
   shift
   exec "$here/Testing/Sanitizers/run.sh" "$@"
+fi
+if [ "${1:-}" = "--clang" ]; then
+  shift
+  exec "$here/Testing/Clang/run.sh" "$@"
 fi
 "$here/scripts/build.sh"
 "$here/scripts/check-format.sh"
