@@ -5,13 +5,13 @@
  * vtkPolygonNormals and vtkVisibleArea check their input and options themselves and hand the
  * computation to a kernel set: PhongVTKPolygonNormalsKernels.cxx and
  * PhongVTKVisibleAreaKernels.cxx, compiled for the baseline instruction set and, on x86-64, again
- * with -mavx -mfma (namespace `phongvtk::avx_fma`, PhongVTKKernelNamespace.h). Nothing is
- * compiled for the build machine: a binary built anywhere runs everywhere, and uses AVX and FMA
- * where the processor has them. Both sets perform the same IEEE operations in the same order
- * (hardware FMA and the C library's fma are the same correctly rounded operation), so their
+ * for AVX + FMA by target pragmas (namespace `phongvtk::avx_fma`, PhongVTKKernelNamespace.h).
+ * Nothing is compiled for the build machine: a binary built anywhere runs everywhere, and uses AVX
+ * and FMA where the processor has them. Both sets perform the same IEEE operations in the same
+ * order (hardware FMA and the C library's fma are the same correctly rounded operation), so their
  * results are the same bits; TestKernelSets checks it by running each.
  *
- * The environment variable PHONGVTK_KERNELS=baseline (or avx_fma) forces a set, for tests and
+ * The environment variable PHONGVTK_KERNELS=baseline forces the baseline set, for tests and
  * comparisons; avx_fma is only taken where the processor has AVX and FMA.
  */
 #ifndef PhongVTKKernels_h

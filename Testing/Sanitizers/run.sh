@@ -9,7 +9,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 sanitizers="$here/Testing/Sanitizers"
 export PHONGVTK_BUILD_DIR="${PHONGVTK_SANITIZE_BUILD_DIR:-$here/build-sanitize}"
 # -O1 and assertions on (Debug): what the sanitizers are usually run with; -O2 with them takes
-# long to compile (vtkPolygonNormals.cxx dominates the build).
+# long to compile (the two compilations of PhongVTKPolygonNormalsKernels.cxx dominate the build).
 flags="-O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 # CMake takes these into CMAKE_<LANG>_FLAGS and the linker flags at the first configuration.
 export CFLAGS="$flags" CXXFLAGS="$flags" LDFLAGS="-fsanitize=address,undefined"
