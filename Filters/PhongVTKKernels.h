@@ -76,37 +76,21 @@ extern const PolygonNormalsKernels PolygonNormalsAvxFma;
 extern const VisibleAreaKernels VisibleAreaAvxFma;
 #endif
 
+/// Whether this build holds the AVX + FMA set (x86-64 with GCC or Clang and the CMake option
+/// PHONGVTK_AVX_FMA_KERNELS on).
+bool AvxFmaKernelsBuilt();
+
 /// Whether the next filter run takes the AVX + FMA set: where the build has it and the
-/// processor has AVX and FMA, unless PHONGVTK_KERNELS=baseline.
+/// processor has AVX and FMA, unless PHONGVTK_KERNELS=baseline. Another value of
+/// PHONGVTK_KERNELS than "baseline" or "avx_fma" is reported once, as a warning, and ignored.
 bool UseAvxFmaKernels();
 
 /// "avx_fma" or "baseline": the set the next filter run takes.
-inline const char* SelectedKernels()
-{
-  return UseAvxFmaKernels() ? "avx_fma" : "baseline";
-}
+const char* SelectedKernels();
 
-inline const PolygonNormalsKernels& SelectedPolygonNormalsKernels()
-{
-#if defined(PHONGVTK_HAVE_AVX_FMA_KERNELS)
-  if (UseAvxFmaKernels())
-  {
-    return PolygonNormalsAvxFma;
-  }
-#endif
-  return PolygonNormalsBaseline;
-}
-
-inline const VisibleAreaKernels& SelectedVisibleAreaKernels()
-{
-#if defined(PHONGVTK_HAVE_AVX_FMA_KERNELS)
-  if (UseAvxFmaKernels())
-  {
-    return VisibleAreaAvxFma;
-  }
-#endif
-  return VisibleAreaBaseline;
-}
+/// The entry points of the set the next filter run takes.
+const PolygonNormalsKernels& SelectedPolygonNormalsKernels();
+const VisibleAreaKernels& SelectedVisibleAreaKernels();
 } // namespace phongvtk
 
 #endif

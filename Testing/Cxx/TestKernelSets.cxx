@@ -6,7 +6,8 @@
 //
 // CTest runs this test twice: as it is, and with glibc's FMA and AVX2 switched off
 // (GLIBC_TUNABLES=glibc.cpu.hwcaps=-AVX2,-FMA), where the baseline set's fma() is glibc's
-// software emulation while the AVX + FMA set uses the instruction: both must still agree.
+// software emulation while the AVX + FMA set uses the instruction: both must still agree (and
+// GlibcTunable.TookEffect checks that glibc did switch its FMA off).
 #include "PhongVTKFilterTestSupport.h"
 #include "PhongVTKKernels.h"
 #include "PhongVTKSkip.h"
@@ -21,6 +22,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#if defined(__x86_64__) && __has_include(<sys/platform/x86.h>)
+#include <sys/platform/x86.h> // glibc 2.33+: CPU_FEATURE_ACTIVE
+#define PHONGVTK_TEST_GLIBC_CPU_FEATURES 1
+#endif
 #include <random>
 #include <string>
 
@@ -32,13 +37,17 @@ using phongvtk_test::Point;
 
 bool ProcessorHasAvxFma()
 {
+#if defined(__x86_64__) || defined(__i386__)
   __builtin_cpu_init();
   return __builtin_cpu_supports("avx") && __builtin_cpu_supports("fma");
+#else
+  return false;
+#endif
 }
 
 /// Runs `produce` with the kernel set `set` forced ("" for the default choice).
-vtkSmartPointer<vtkPolyData> With(
-  const char* set, const std::function<vtkSmartPointer<vtkPolyData>()>& produce)
+template <typename Produce>
+auto With(const char* set, const Produce& produce)
 {
   if (*set)
   {
@@ -101,26 +110,62 @@ void ExpectSameBits(vtkPolyData* a, vtkPolyData* b, const std::string& what)
   }
 }
 
+/// One filter run: its output and the errors it reported.
+struct FilterRun
+{
+  vtkSmartPointer<vtkPolyData> Output;
+  std::vector<std::string> Errors;
+};
+
 /// `produce` with each set forced: the same bits, and the set asked for is the one selected.
-void ExpectSetsAgree(
-  const std::function<vtkSmartPointer<vtkPolyData>()>& produce, const std::string& what)
+/// Each run must report no error, keep every cell of `input` and hold the cell arrays
+/// `cellArrays` and the point arrays `pointArrays` (a run that failed as a whole would
+/// otherwise agree with the other on nothing).
+void ExpectSetsAgree(const std::function<FilterRun()>& produce, vtkPolyData* input,
+  const std::vector<std::string>& cellArrays, const std::vector<std::string>& pointArrays,
+  const std::string& what)
 {
   std::string selected;
-  auto base = With("baseline",
-    [&]
+  const FilterRun runs[2] = { With("baseline",
+                                [&]
+                                {
+                                  selected = phongvtk::SelectedKernels();
+                                  return produce();
+                                }),
+    With("",
+      [&]
+      {
+        EXPECT_EQ(selected, "baseline") << what;
+        selected = phongvtk::SelectedKernels();
+        return produce();
+      }) };
+  EXPECT_EQ(selected, "avx_fma") << what;
+  for (const FilterRun& run : runs)
+  {
+    EXPECT_TRUE(run.Errors.empty()) << what << ": " << run.Errors.front();
+    ASSERT_EQ(run.Output->GetNumberOfCells(), input->GetNumberOfCells()) << what;
+    for (const std::string& name : cellArrays)
     {
-      selected = phongvtk::SelectedKernels();
-      return produce();
-    });
-  EXPECT_EQ(selected, "baseline");
-  auto avx = With("",
-    [&]
+      ASSERT_NE(run.Output->GetCellData()->GetArray(name.c_str()), nullptr)
+        << what << ": cell array " << name;
+    }
+    for (const std::string& name : pointArrays)
     {
-      selected = phongvtk::SelectedKernels();
-      return produce();
-    });
-  EXPECT_EQ(selected, "avx_fma");
-  ExpectSameBits(base, avx, what);
+      ASSERT_NE(run.Output->GetPointData()->GetArray(name.c_str()), nullptr)
+        << what << ": point array " << name;
+    }
+  }
+  ExpectSameBits(runs[0].Output, runs[1].Output, what);
+}
+
+/// vtkPolygonNormals on `input` with `configure`.
+FilterRun RunNormals(vtkPolyData* input, const std::function<void(vtkPolygonNormals*)>& configure)
+{
+  vtkNew<phongvtk_test::MessageObserver> messages;
+  FilterRun run;
+  run.Output = phongvtk_test::RunFilter(input, configure, messages);
+  run.Errors = messages->Errors;
+  return run;
 }
 
 /// A soup of triangles (in runs, for the 4-lane path), quads and heptagons, each polygon at its
@@ -183,6 +228,11 @@ class KernelSets : public ::testing::Test
 protected:
   void SetUp() override
   {
+    if (!phongvtk::AvxFmaKernelsBuilt())
+    {
+      PHONGVTK_SKIP() << "this build has no AVX + FMA set (PHONGVTK_AVX_FMA_KERNELS off, or not "
+                         "x86-64 with GCC or Clang)";
+    }
     if (!ProcessorHasAvxFma())
     {
       PHONGVTK_SKIP() << "this processor has no AVX + FMA: only the baseline set runs here";
@@ -218,7 +268,7 @@ TEST_F(KernelSets, PolygonNormalsAgreeInEveryModeAndWeighting)
             ExpectSetsAgree(
               [&]
               {
-                return phongvtk_test::RunFilter(mesh,
+                return RunNormals(mesh,
                   [&](vtkPolygonNormals* f)
                   {
                     f->SetAccuracy(accuracy);
@@ -230,6 +280,7 @@ TEST_F(KernelSets, PolygonNormalsAgreeInEveryModeAndWeighting)
                     f->SetComputeNormalStatus(true);
                   });
               },
+              mesh, { "Normals", "AreaVectors", "Areas", "NormalStatus" }, { "Normals" },
               "points " + std::to_string(pointType) + " accuracy " + std::to_string(accuracy) +
                 " weighting " + std::to_string(weighting) + " precision " +
                 std::to_string(precision));
@@ -261,7 +312,7 @@ TEST_F(KernelSets, SplittingAndOrientationAgree)
         ExpectSetsAgree(
           [&]
           {
-            return phongvtk_test::RunFilter(mesh,
+            return RunNormals(mesh,
               [&](vtkPolygonNormals* f)
               {
                 f->SetAccuracy(accuracy);
@@ -273,6 +324,7 @@ TEST_F(KernelSets, SplittingAndOrientationAgree)
                 f->SetComputeOriginalPointIds(true);
               });
           },
+          mesh, { "Normals" }, { "Normals", "OriginalPointIds" },
           "split accuracy " + std::to_string(accuracy) + (autoOrient ? " auto-orient" : ""));
       }
     }
@@ -297,6 +349,7 @@ TEST_F(KernelSets, VisibleAreaAgreesInEveryMode)
               vtkNew<vtkVisibleArea> filter;
               vtkNew<phongvtk_test::MessageObserver> messages; // the non-finite polygons' warning
               messages->Watch(filter);
+              FilterRun run;
               vtkNew<vtkCamera> camera;
               camera->SetPosition(3.0, -2.0, 5.0);
               if (eye)
@@ -308,14 +361,53 @@ TEST_F(KernelSets, VisibleAreaAgreesInEveryMode)
               filter->SetComputeMaxVisibleArea(true);
               filter->SetInputData(mesh);
               filter->Update();
-              auto out = vtkSmartPointer<vtkPolyData>::New();
-              out->ShallowCopy(filter->GetOutput());
-              return out;
+              run.Output = vtkSmartPointer<vtkPolyData>::New();
+              run.Output->ShallowCopy(filter->GetOutput());
+              run.Errors = messages->Errors;
+              return run;
             },
+            mesh, { "VisibleArea" }, {},
             "visible area accuracy " + std::to_string(accuracy) + (eye ? " eye" : ""));
         }
       }
     }
   }
+}
+
+TEST(KernelChoice, BaselineWhereThereIsNoAvxFmaSet)
+{
+  if (phongvtk::AvxFmaKernelsBuilt() && ProcessorHasAvxFma())
+  {
+    PHONGVTK_SKIP() << "this build and processor have the AVX + FMA set (KernelSets tests it)";
+  }
+  unsetenv("PHONGVTK_KERNELS");
+  EXPECT_STREQ(phongvtk::SelectedKernels(), "baseline");
+}
+
+TEST(KernelChoice, AnUnknownValueIsIgnored)
+{
+  const std::string expected =
+    phongvtk::AvxFmaKernelsBuilt() && ProcessorHasAvxFma() ? "avx_fma" : "baseline";
+  setenv("PHONGVTK_KERNELS", "Baseline ", 1); // not the exact name: warned about, not taken
+  EXPECT_EQ(phongvtk::SelectedKernels(), expected);
+  unsetenv("PHONGVTK_KERNELS");
+}
+
+// Under ctest's TestKernelSets.GlibcWithoutFma, glibc must really have switched its FMA off:
+// otherwise that run compares the same two paths as the plain one.
+TEST(GlibcTunable, TookEffect)
+{
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  if (!tunables || !std::strstr(tunables, "-FMA"))
+  {
+    PHONGVTK_SKIP() << "GLIBC_TUNABLES does not switch FMA off in this run";
+  }
+#if defined(PHONGVTK_TEST_GLIBC_CPU_FEATURES)
+  EXPECT_FALSE(CPU_FEATURE_ACTIVE(FMA)) << "GLIBC_TUNABLES=" << tunables << " left glibc's FMA on";
+  EXPECT_FALSE(CPU_FEATURE_ACTIVE(AVX2))
+    << "GLIBC_TUNABLES=" << tunables << " left glibc's AVX2 on";
+#else
+  PHONGVTK_SKIP() << "no <sys/platform/x86.h> to ask glibc";
+#endif
 }
 } // namespace
