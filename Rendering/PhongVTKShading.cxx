@@ -21,7 +21,7 @@
 #include "PhongSpecular.h"
 #include "PhongSpotlight.h"
 
-#include "vtk_glew.h"
+#include "PhongVTKOpenGL.h" // GLenum, GL_VIEWPORT
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #include "PhongVTKMapperCore.h"
 
 // VTK 9.1's vtkCompositeMapperHelper2.h uses GLenum without declaring it (fixed in 9.2).
-#include "vtk_glew.h"
+#include "PhongVTKOpenGL.h"
 
 #include "vtkCompositeMapperHelper2.h"
 #include "vtkObjectFactory.h"

@@ -45,7 +45,7 @@ packages=(
   "${flavour[@]}"
   # headless rendering: OSMesa and EGL (Mesa llvmpipe), no X server
   libosmesa6-dev libegl-dev libgl-dev libx11-dev libglew-dev
-  # VTK's XML parser on the system's expat (Rendering/PhongVTKExpatDeferral.cxx)
+  # VTK's XML parser on the system's expat (RenderingHeadless/PhongVTKExpatDeferral.cxx)
   libexpat1-dev
   # an X server for the tests that check coexistence with VTK's own GLX window
   xvfb

@@ -1,12 +1,18 @@
 #include "vtkPhongSurfaceRepresentation.h"
 
 #include "PhongVTKOptions.h" // PhongVTK::Filters' checked setter of enumerated options
+#include "vtkAutoInit.h"
 #include "vtkObjectFactory.h"
 #include "vtkPhongCompositePolyDataMapper.h"
 #include "vtkPhongPolyDataMapper.h"
 #include "vtkProperty.h"
 
 #include <cmath>
+
+// ParaView 5.11's VTK is GLX-only: the plugin brings PhongVTK's headless windows, which take
+// vtkRenderWindow's place in pvbatch and pvpython without an X display
+// (PhongVTK::RenderingHeadless; the reference keeps the library linked).
+VTK_MODULE_INIT(vtkPhongVTKRenderingHeadless);
 
 vtkStandardNewMacro(vtkPhongSurfaceRepresentation);
 

@@ -40,11 +40,25 @@ ACCURACIES = {"fast": 0, "double": 1, "compensated": 2, "exact": 3}
 WEIGHTINGS = {"area": 0, "angle": 1, "uniform": 2, "max": 3}
 #: vtkPhongPolyDataMapper.ApplyPreset's names.
 PRESETS = ("plastic", "metal", "matte")
+def _backends():
+    """Headless window classes by backend name: PhongVTK's own (PhongVTK::RenderingHeadless,
+    VTK before 9.4), else VTK's (9.4 and later build OSMesa always and EGL by default)."""
+    if phongvtk.HEADLESS:
+        return {
+            "osmesa": phongvtk.vtkHeadlessOSMesaRenderWindow,
+            "egl": phongvtk.vtkHeadlessEGLRenderWindow,
+        }
+    import vtkmodules.vtkRenderingOpenGL2 as opengl
+
+    found = {
+        "osmesa": getattr(opengl, "vtkOSOpenGLRenderWindow", None),
+        "egl": getattr(opengl, "vtkEGLRenderWindow", None),
+    }
+    return {name: window for name, window in found.items() if window is not None}
+
+
 #: Headless window classes by backend name.
-BACKENDS = {
-    "osmesa": phongvtk.vtkHeadlessOSMesaRenderWindow,
-    "egl": phongvtk.vtkHeadlessEGLRenderWindow,
-}
+BACKENDS = _backends()
 
 
 @dataclass

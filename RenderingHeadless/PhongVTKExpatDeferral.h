@@ -1,5 +1,6 @@
 /**
- * Private to PhongVTK::Rendering: VTK 9.1/9.2's XML readers on an expat with reparse deferral.
+ * Private to PhongVTK::RenderingHeadless: VTK 9.1/9.2's XML readers on an expat with reparse
+ * deferral.
  *
  * Expat 2.6.0 defers reparsing a token that was incomplete at the end of the previous input until
  * enough new input has arrived (the fix of CVE-2023-52425; Debian 12 backports it into
@@ -23,7 +24,7 @@
 #ifndef PhongVTKExpatDeferral_h
 #define PhongVTKExpatDeferral_h
 
-#include "vtkPhongVTKRenderingModule.h" // for the export macro
+#include "vtkPhongVTKRenderingHeadlessModule.h" // for the export macro
 
 #include <string>
 
@@ -40,13 +41,13 @@ enum class ExpatDeferral
 };
 
 /// What was done when the library was loaded; `*problem` (if given) says why for Failed.
-VTKPHONGVTKRENDERING_EXPORT ExpatDeferral GetExpatDeferral(std::string* problem = nullptr);
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT ExpatDeferral GetExpatDeferral(std::string* problem = nullptr);
 
 /**
  * Whether VTK's XML parser, as it is now, reads a document whose appended data spans several of
  * its reads (parsed from memory, errors kept from the output window): the case deferral breaks.
  */
-VTKPHONGVTKRENDERING_EXPORT bool VTKReadsAppendedXML();
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT bool VTKReadsAppendedXML();
 
 }
 

@@ -38,14 +38,14 @@
 #define vtkHeadlessRenderWindow_h
 
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkPhongVTKRenderingModule.h" // for export macro
+#include "vtkPhongVTKRenderingHeadlessModule.h" // for export macro
 
 #include "vtkWeakPointer.h" // for the context stack
 
 #include <string> // for std::string
 #include <vector> // for std::vector
 
-class VTKPHONGVTKRENDERING_EXPORT vtkHeadlessRenderWindow : public vtkOpenGLRenderWindow
+class VTKPHONGVTKRENDERINGHEADLESS_EXPORT vtkHeadlessRenderWindow : public vtkOpenGLRenderWindow
 {
 public:
   /**

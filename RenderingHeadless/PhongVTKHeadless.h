@@ -1,6 +1,6 @@
 /**
- * Private to PhongVTK::Rendering: the policy that picks a render window, and the libraries the
- * headless backends load at run time.
+ * Private to PhongVTK::RenderingHeadless: the policy that picks a render window, and the libraries
+ * the headless backends load at run time.
  *
  * The policy (ParseRequest, ChooseWindow) is a pure function of its inputs so that every branch
  * is tested without the machine having to lack a display or a library. The loaders look the
@@ -10,7 +10,7 @@
 #ifndef PhongVTKHeadless_h
 #define PhongVTKHeadless_h
 
-#include "vtkPhongVTKRenderingModule.h" // for the export macro
+#include "vtkPhongVTKRenderingHeadlessModule.h" // for the export macro
 
 #include <string>
 
@@ -47,17 +47,17 @@ struct Choice
 
 /// PHONGVTK_HEADLESS's value (case-insensitive); null or empty is Auto. An unknown value is Auto
 /// and `*invalid` receives a message naming it.
-VTKPHONGVTKRENDERING_EXPORT Request ParseRequest(const char* value, std::string* invalid);
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT Request ParseRequest(const char* value, std::string* invalid);
 
 /// The window for a request. `osmesaProblem` is empty when OSMesa can be used, otherwise why not.
-VTKPHONGVTKRENDERING_EXPORT Choice ChooseWindow(
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT Choice ChooseWindow(
   Request request, bool xDisplayAvailable, const std::string& osmesaProblem);
 
 /// The choice for this process now: PHONGVTK_HEADLESS, the X display, OSMesa's availability.
-VTKPHONGVTKRENDERING_EXPORT Choice ChooseWindowFromEnvironment();
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT Choice ChooseWindowFromEnvironment();
 
 /// Whether DISPLAY names an X server that accepts a connection (probed once per DISPLAY value).
-VTKPHONGVTKRENDERING_EXPORT bool XDisplayAvailable();
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT bool XDisplayAvailable();
 
 /**
  * Whether the process is ending: this library's static objects are being destroyed (exit(), or
@@ -66,20 +66,20 @@ VTKPHONGVTKRENDERING_EXPORT bool XDisplayAvailable();
  * leave their contexts to the process's end: the GL libraries loaded after ParaView's have been
  * finalised by then, and the registries of contexts would be gone.
  */
-VTKPHONGVTKRENDERING_EXPORT bool ProcessEnding();
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT bool ProcessEnding();
 
 /// Makes ProcessEnding() true also from the first of exit()'s handlers that runs after Mesa's
 /// (registered once, when a headless context has been created).
-VTKPHONGVTKRENDERING_EXPORT void WatchForTheEnd();
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT void WatchForTheEnd();
 
 /// Releases the OpenGL context current on this thread, whichever library made it current (OSMesa
 /// through PhongVTK, EGL, GLX); nothing when none is. Native state only: no window object needs
 /// to be alive. glvnd lets one window-system library at a time have a context current on a
 /// thread, so binding a context of another library needs this first.
-VTKPHONGVTKRENDERING_EXPORT void ReleaseThreadContext();
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT void ReleaseThreadContext();
 
 /// Whether a PhongVTK headless context (OSMesa through PhongVTK, or EGL) is current on this thread.
-VTKPHONGVTKRENDERING_EXPORT bool HeadlessContextIsCurrent();
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT bool HeadlessContextIsCurrent();
 
 /**
  * Makes VTK's calls to glewInit() (vtkOpenGLRenderWindow::OpenGLInitContext) succeed when a
@@ -89,10 +89,10 @@ VTKPHONGVTKRENDERING_EXPORT bool HeadlessContextIsCurrent();
  * then reports GLEW_ERROR_NO_GLX_DISPLAY. Done once per process, by rewriting the import slot of
  * glewInit in VTK's OpenGL library; false, with the reason in `*problem`, when there is none.
  */
-VTKPHONGVTKRENDERING_EXPORT bool RouteVTKGlewInit(std::string* problem);
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT bool RouteVTKGlewInit(std::string* problem);
 
 /// Emits `message` as a VTK warning the first time it is seen in this process.
-VTKPHONGVTKRENDERING_EXPORT void WarnOnce(const std::string& message);
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT void WarnOnce(const std::string& message);
 
 /**
  * Mesa's OSMesa and glvnd's dispatch, loaded once per process.
@@ -103,7 +103,7 @@ VTKPHONGVTKRENDERING_EXPORT void WarnOnce(const std::string& message);
  * use themselves (__glDispatchMakeCurrent, ABI version 1). That interface is private to glvnd,
  * hence the version check: anything else and OSMesa is reported unusable.
  */
-class VTKPHONGVTKRENDERING_EXPORT OSMesaLibrary
+class VTKPHONGVTKRENDERINGHEADLESS_EXPORT OSMesaLibrary
 {
 public:
   /// The library, or null with the reason in `*problem`.
@@ -140,7 +140,7 @@ private:
 
 /// Testing hook: the library names and the glvnd ABI version OSMesaLibrary::Get() will require.
 /// Only effective before the first Get() in the process.
-VTKPHONGVTKRENDERING_EXPORT void SetOSMesaLibrariesForTesting(
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT void SetOSMesaLibrariesForTesting(
   const char* osmesa, const char* glDispatch, int requiredDispatchABI);
 
 }

@@ -14,11 +14,12 @@
 #define vtkHeadlessEGLRenderWindow_h
 
 #include "vtkHeadlessRenderWindow.h"
-#include "vtkPhongVTKRenderingModule.h" // for export macro
+#include "vtkPhongVTKRenderingHeadlessModule.h" // for export macro
 
 #include <string> // for std::string
 
-class VTKPHONGVTKRENDERING_EXPORT vtkHeadlessEGLRenderWindow : public vtkHeadlessRenderWindow
+class VTKPHONGVTKRENDERINGHEADLESS_EXPORT vtkHeadlessEGLRenderWindow
+  : public vtkHeadlessRenderWindow
 {
 public:
   static vtkHeadlessEGLRenderWindow* New();

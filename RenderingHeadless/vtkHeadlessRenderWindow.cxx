@@ -239,7 +239,7 @@ const FactoryInstaller Installer;
 }
 
 // VTK's module autoinit (the module IMPLEMENTS VTK::RenderingCore).
-VTKPHONGVTKRENDERING_EXPORT void vtkPhongVTKRendering_AutoInit_Construct()
+VTKPHONGVTKRENDERINGHEADLESS_EXPORT void vtkPhongVTKRenderingHeadless_AutoInit_Construct()
 {
   InstallFactory();
 }

@@ -1,5 +1,5 @@
 /**
- * Private to PhongVTK::Rendering: redirecting one library's calls to one imported function.
+ * Private to PhongVTK::RenderingHeadless: redirecting one library's calls to one imported function.
  *
  * Two defects of Debian's VTK 9.1/9.2 on current system libraries are fixed at the one call that
  * goes wrong (GLEW's glewInit on a non-GLX context; expat's XML_ParserCreate, see

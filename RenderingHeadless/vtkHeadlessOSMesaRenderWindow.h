@@ -21,13 +21,14 @@
 #define vtkHeadlessOSMesaRenderWindow_h
 
 #include "vtkHeadlessRenderWindow.h"
-#include "vtkPhongVTKRenderingModule.h" // for export macro
+#include "vtkPhongVTKRenderingHeadlessModule.h" // for export macro
 
 #include <string> // for std::string
 
 struct osmesa_context;
 
-class VTKPHONGVTKRENDERING_EXPORT vtkHeadlessOSMesaRenderWindow : public vtkHeadlessRenderWindow
+class VTKPHONGVTKRENDERINGHEADLESS_EXPORT vtkHeadlessOSMesaRenderWindow
+  : public vtkHeadlessRenderWindow
 {
 public:
   static vtkHeadlessOSMesaRenderWindow* New();
