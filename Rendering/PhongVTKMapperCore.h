@@ -1,9 +1,9 @@
-// The Phong model's overrides of vtkOpenGLPolyDataMapper, written once for both mappers that
-// use them: vtkPhongPolyDataMapper (a vtkOpenGLPolyDataMapper) and the helper of
-// vtkPhongCompositePolyDataMapper (a vtkCompositeMapperHelper2). Each mapper keeps a
-// MapperState, declares `friend struct phongvtk::MapperCore<ItsClass>` and forwards its
-// overrides here; MapperCore<M> calls M::Superclass where VTK's own code runs. Private to
-// PhongVTK::Rendering.
+// The Phong model's overrides of vtkOpenGLPolyDataMapper, written once for every mapper that
+// uses them: vtkPhongPolyDataMapper (a vtkOpenGLPolyDataMapper) and the block mapper of
+// vtkPhongCompositePolyDataMapper (a vtkCompositeMapperHelper2 up to VTK 9.2, a
+// vtkOpenGLBatchedPolyDataMapper from 9.3). Each mapper keeps a MapperState, declares
+// `friend struct phongvtk::MapperCore<ItsClass>` and forwards its overrides here;
+// MapperCore<M> calls M::Superclass where VTK's own code runs. Private to PhongVTK::Rendering.
 #ifndef PhongVTKMapperCore_h
 #define PhongVTKMapperCore_h
 
@@ -42,6 +42,7 @@ struct MapperState
     bool Built = false; ///< BuildShaders ran in the current UpdateShaders
   };
   std::map<const vtkOpenGLHelper*, Primitive> Primitives;
+  const vtkOpenGLHelper* Triangles = nullptr; ///< the mapper's primitive of polygons
   shading::Scene Scene;
   bool WarnedNoPointNormals = false;
   int ShaderRebuilds = 0;
@@ -185,10 +186,11 @@ struct MapperCore
       return;
     }
     // VTK's colour code declares the specular material whenever the primitive is lit; it does
-    // so only when the light complexity is non-zero, so hide it for that call.
-    int& complexity = m.PrimitiveInfo[m.LastBoundBO].LastLightComplexity;
-    const int lit = complexity;
-    complexity = 0;
+    // so only when the light complexity is non-zero, so hide it for that call. (An int up to
+    // VTK 9.2, primitiveInfo::LightingTypeEnum from 9.3: 0 is "no lighting" in both.)
+    auto& complexity = m.PrimitiveInfo[m.LastBoundBO].LastLightComplexity;
+    const auto lit = complexity;
+    complexity = decltype(lit){};
     m.Base::ReplaceShaderColor(shaders, ren, act);
     complexity = lit;
   }
@@ -282,46 +284,5 @@ struct MapperCore
 };
 
 }
-
-/// Defines the overrides of mapper class `M` as forwards to MapperCore<M>; `STATE` is an
-/// expression naming the class's MapperState (e.g. `this->Internals->State`).
-#define PHONGVTK_MAPPER_CORE_FORWARDS(M, STATE)                                                    \
-  bool M::GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)        \
-  {                                                                                                \
-    return phongvtk::MapperCore<M>::GetNeedToRebuildShaders(*this, STATE, cellBO, ren, act);       \
-  }                                                                                                \
-  void M::UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)                  \
-  {                                                                                                \
-    phongvtk::MapperCore<M>::UpdateShaders(*this, STATE, cellBO, ren, act);                        \
-  }                                                                                                \
-  void M::BuildShaders(                                                                            \
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)                \
-  {                                                                                                \
-    phongvtk::MapperCore<M>::BuildShaders(*this, STATE, shaders, ren, act);                        \
-  }                                                                                                \
-  void M::ReplaceShaderColor(                                                                      \
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)                \
-  {                                                                                                \
-    phongvtk::MapperCore<M>::ReplaceShaderColor(*this, STATE, shaders, ren, act);                  \
-  }                                                                                                \
-  void M::ReplaceShaderNormal(                                                                     \
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)                \
-  {                                                                                                \
-    phongvtk::MapperCore<M>::ReplaceShaderNormal(*this, STATE, shaders, ren, act);                 \
-  }                                                                                                \
-  void M::ReplaceShaderLight(                                                                      \
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)                \
-  {                                                                                                \
-    phongvtk::MapperCore<M>::ReplaceShaderLight(*this, STATE, shaders, ren, act);                  \
-  }                                                                                                \
-  void M::ReplaceShaderPositionVC(                                                                 \
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)                \
-  {                                                                                                \
-    phongvtk::MapperCore<M>::ReplaceShaderPositionVC(*this, STATE, shaders, ren, act);             \
-  }                                                                                                \
-  void M::SetLightingShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)    \
-  {                                                                                                \
-    phongvtk::MapperCore<M>::SetLightingShaderParameters(*this, STATE, cellBO, ren, act);          \
-  }
 
 #endif

@@ -20,6 +20,7 @@ vtkStandardNewMacro(vtkPhongPolyDataMapper);
 vtkPhongPolyDataMapper::vtkPhongPolyDataMapper()
   : Internals(new vtkInternals)
 {
+  this->Internals->State.Triangles = &this->Primitives[PrimitiveTris];
 }
 
 vtkPhongPolyDataMapper::~vtkPhongPolyDataMapper() = default;
@@ -104,22 +105,76 @@ int vtkPhongPolyDataMapper::GetShaderRebuilds()
 
 std::string vtkPhongPolyDataMapper::GetVertexShaderSource()
 {
-  return this->Internals->State.Get(&this->Primitives[PrimitiveTris]).VertexSource;
+  return this->Internals->State.Get(this->Internals->State.Triangles).VertexSource;
 }
 
 std::string vtkPhongPolyDataMapper::GetFragmentShaderSource()
 {
-  return this->Internals->State.Get(&this->Primitives[PrimitiveTris]).FragmentSource;
+  return this->Internals->State.Get(this->Internals->State.Triangles).FragmentSource;
 }
 
 std::string vtkPhongPolyDataMapper::GetShaderConfiguration()
 {
-  const auto& primitive = this->Internals->State.Get(&this->Primitives[PrimitiveTris]);
+  const auto& primitive = this->Internals->State.Get(this->Internals->State.Triangles);
   return primitive.Active ? primitive.Configuration.Describe() : std::string();
 }
 
 //------------------------------------------------------------------------------
-PHONGVTK_MAPPER_CORE_FORWARDS(vtkPhongPolyDataMapper, this->PhongState())
+// The Phong model's overrides (PhongVTKMapperCore.h).
+bool vtkPhongPolyDataMapper::GetNeedToRebuildShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  return phongvtk::MapperCore<vtkPhongPolyDataMapper>::GetNeedToRebuildShaders(
+    *this, this->PhongState(), cellBO, ren, act);
+}
+
+void vtkPhongPolyDataMapper::UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  phongvtk::MapperCore<vtkPhongPolyDataMapper>::UpdateShaders(
+    *this, this->PhongState(), cellBO, ren, act);
+}
+
+void vtkPhongPolyDataMapper::BuildShaders(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  phongvtk::MapperCore<vtkPhongPolyDataMapper>::BuildShaders(
+    *this, this->PhongState(), shaders, ren, act);
+}
+
+void vtkPhongPolyDataMapper::ReplaceShaderColor(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  phongvtk::MapperCore<vtkPhongPolyDataMapper>::ReplaceShaderColor(
+    *this, this->PhongState(), shaders, ren, act);
+}
+
+void vtkPhongPolyDataMapper::ReplaceShaderNormal(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  phongvtk::MapperCore<vtkPhongPolyDataMapper>::ReplaceShaderNormal(
+    *this, this->PhongState(), shaders, ren, act);
+}
+
+void vtkPhongPolyDataMapper::ReplaceShaderLight(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  phongvtk::MapperCore<vtkPhongPolyDataMapper>::ReplaceShaderLight(
+    *this, this->PhongState(), shaders, ren, act);
+}
+
+void vtkPhongPolyDataMapper::ReplaceShaderPositionVC(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  phongvtk::MapperCore<vtkPhongPolyDataMapper>::ReplaceShaderPositionVC(
+    *this, this->PhongState(), shaders, ren, act);
+}
+
+void vtkPhongPolyDataMapper::SetLightingShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  phongvtk::MapperCore<vtkPhongPolyDataMapper>::SetLightingShaderParameters(
+    *this, this->PhongState(), cellBO, ren, act);
+}
 
 //------------------------------------------------------------------------------
 void vtkPhongPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)

@@ -414,9 +414,15 @@ def write_atomically(writer, path, progress):
     except OSError as error:
         raise CommandError(f"cannot write '{path}': {error.strerror}") from None
     try:
-        writer.SetFileName(partial)
         what = f"cannot write '{path}'"
-        progress.run(writer, f"write {os.path.basename(path)}", what, "Write")
+        if writes_through_memory(writer):
+            writer.WriteToOutputStringOn()
+            progress.run(writer, f"write {os.path.basename(path)}", what, "Write")
+            with open(partial, "wb") as file:
+                file.write(writer.GetOutputString().encode("ascii"))
+        else:
+            writer.SetFileName(partial)
+            progress.run(writer, f"write {os.path.basename(path)}", what, "Write")
         # Some writers (vtkPNGWriter) report a file they cannot write through the error code.
         if hasattr(writer, "GetErrorCode") and writer.GetErrorCode():
             raise CommandError(what)
@@ -441,6 +447,14 @@ def write_atomically(writer, path, progress):
             os.remove(partial)
 
 
+def writes_through_memory(writer):
+    """Whether `writer` writes into memory first (and Python then to the file): VTK's XML writer
+    from 9.3 on (measured on 9.6.2) frees its position arrays twice when a write fails (a full
+    disk, ulimit -f) and aborts the process. In inline binary mode the document is ASCII."""
+    return (isinstance(writer, vtkXMLPolyDataWriter)
+            and (vtkVersion.GetVTKMajorVersion(), vtkVersion.GetVTKMinorVersion()) >= (9, 3))
+
+
 def usual_mode(path):
     """The permission bits of the existing file `path`, else 0666 less the process's umask."""
     try:
@@ -456,9 +470,10 @@ def write_mesh(mesh, path, progress=None):
     MESH_WRITERS).
 
     VTP and legacy VTK keep every array; PLY keeps the geometry (and what vtkPLYWriter writes of
-    point data); STL keeps only triangles (polygons and strips are triangulated). VTP is written
-    in inline binary mode, which every VTK and ParaView reads on every expat (appended mode, the
-    writer's default, is unreadable for VTK before 9.3.1 on expat >= 2.6 without PhongVTK).
+    point data); STL keeps only triangles (polygons and strips are triangulated), in binary STL.
+    VTP is written in inline binary mode, which every VTK and ParaView reads on every expat
+    (appended mode, the writer's default, is unreadable for VTK before 9.3.1 on expat >= 2.6
+    without PhongVTK).
     """
     progress = progress or Progress(quiet=True)
     check_output(path, MESH_WRITERS)
@@ -472,6 +487,10 @@ def write_mesh(mesh, path, progress=None):
     writer.SetInputData(mesh)
     if kind == ".vtp":
         writer.SetDataModeToBinary()
+    if kind == ".stl":
+        # Binary: ASCII STL is written through {fmt} from VTK 9.4 on, which aborts the process
+        # when a write fails (measured on 9.6.2); the binary writer reports it.
+        writer.SetFileTypeToBinary()
     write_atomically(writer, path, progress)
 
 

@@ -45,6 +45,9 @@ public:
     Apply(scene, camera, this->Renderer);
     this->Window->AddRenderer(this->Renderer);
     this->Window->SetSize(Size, Size);
+    // One sample per pixel, as the references evaluate at pixel centres (VTK 9.4 and later's
+    // own OSMesa and EGL windows multisample by default; PhongVTK's headless windows do not).
+    this->Window->SetMultiSamples(0);
   }
   Image Render()
   {
@@ -65,6 +68,9 @@ protected:
   {
     unsetenv("DISPLAY");
     unsetenv("PHONGVTK_HEADLESS");
+    // VTK 9.4 and later: VTK's own OSMesa window, without first trying X and warning that there
+    // is no display (PhongVTK's headless window on earlier VTK, which ignores the variable).
+    setenv("VTK_DEFAULT_OPENGL_WINDOW", "vtkOSOpenGLRenderWindow", 0);
   }
 };
 

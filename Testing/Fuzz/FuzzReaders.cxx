@@ -135,8 +135,14 @@ extern "C" int LLVMFuzzerInitialize(int*, char***)
   ReportFd = dup(2); // libFuzzer's -close_fd_mask closes stderr later
   Py_InitializeEx(0);
   PyObject* sysPath = PySys_GetObject("path");
-  for (const char* path : { PHONGVTK_FUZZ_DIRECTORY, PHONGVTK_PYTHONPATH })
+  // VTK's own package first when it is not the system's (a VTK built from source), then the
+  // package and the fuzzing script in front of it.
+  for (const char* path : { PHONGVTK_VTK_PYTHONPATH, PHONGVTK_FUZZ_DIRECTORY, PHONGVTK_PYTHONPATH })
   {
+    if (!*path)
+    {
+      continue;
+    }
     PyObject* directory = PyUnicode_FromString(path);
     PyList_Insert(sysPath, 0, directory);
     Py_DECREF(directory);

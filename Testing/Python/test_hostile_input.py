@@ -15,6 +15,7 @@ import time
 import numpy as np
 import pytest
 from vtkmodules.util import numpy_support
+from vtkmodules.vtkCommonCore import vtkVersion
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 import phongvtk
@@ -46,6 +47,10 @@ def expect_clean_error(result, *words):
     assert lines[0].startswith("phongvtk: error: "), lines
     for word in words:
         assert word in lines[0], (word, lines[0])
+
+
+#: Whether the VTK in use is 9.3 or later, whose readers differ from 9.1/9.2's on some files.
+VTK_AT_LEAST_9_3 = (vtkVersion.GetVTKMajorVersion(), vtkVersion.GetVTKMinorVersion()) >= (9, 3)
 
 
 def polygons_of(path):
@@ -362,7 +367,8 @@ OBJ_TRIANGLE = "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
     ("f 1 2 4\n", None, "line 4 refers to vertex 4; the file has 3"),
     ("f -3 -2 -1\n", 1, None),
     ("f -1 -2 -4\n", None, "line 4 refers to vertex -4"),
-    ("f 1 2 4294967299\n", 1, None),  # C's int: vtkOBJReader reads vertex 3
+    # C's int: vtkOBJReader up to 9.2 reads vertex 3; later ones refuse the token themselves.
+    ("f 1 2 4294967299\n", 1, None),
     ("f 1 2 \\\n 3\n", 1, None),  # a continuation line
     ("f 1 2 \\\n 9\n", None, "line 5 refers to vertex 9"),
     ("l 1/7 2\nf 1 2 3\n", 1, None),  # a line's texture index is ignored; GroupIds is left out
@@ -376,7 +382,9 @@ def test_obj_indices_vtk_would_use_outside_the_file_are_named(cli, tmp_path, bod
                                                                words):
     (tmp_path / "in.obj").write_text(OBJ_TRIANGLE + body)
     result = cli("normals", "in.obj", "-o", "out.vtp", "-q")
-    if words is None:
+    if "4294967299" in body and VTK_AT_LEAST_9_3:
+        expect_clean_error(result, "in.obj")  # "Unexpected token in OBJ file at L.4"
+    elif words is None:
         assert result.returncode == 0, result.stderr
         assert len(polygons_of(tmp_path / "out.vtp")) == polygons
     elif words:
@@ -392,12 +400,17 @@ def test_obj_arrays_that_do_not_match_the_points_are_left_out_with_a_warning(cli
                                      "f 1/1 2/2 3/3\n")
     result = cli("normals", "in.obj", "-o", "out.vtp")
     assert result.returncode == 0, result.stderr
-    assert "phongvtk: warning: 'in.obj': point array 'TCoords' left out: it has 4 values for 3 " \
-        "points" in result.stderr
     reader = vtkXMLPolyDataReader()
     reader.SetFileName(str(tmp_path / "out.vtp"))
     reader.Update()
-    assert reader.GetOutput().GetPointData().GetArray("TCoords") is None
+    coordinates = reader.GetOutput().GetPointData().GetArray("TCoords")
+    if VTK_AT_LEAST_9_3 and coordinates is not None:
+        # Later vtkOBJReaders give one texture coordinate per point themselves.
+        assert coordinates.GetNumberOfTuples() == reader.GetOutput().GetNumberOfPoints()
+        return
+    assert "phongvtk: warning: 'in.obj': point array 'TCoords' left out: it has 4 values for 3 " \
+        "points" in result.stderr
+    assert coordinates is None
 
 
 STL_TRIANGLE = ("facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n  vertex 0 1 0\n"
