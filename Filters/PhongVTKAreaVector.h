@@ -235,6 +235,92 @@ PHONGVTK_INLINE void TwoProduct(V4 a, V4 b, V4& p, V4& e)
   e = Fma(a, b, -p);
 }
 
+//------------------------------------------------------------------------------
+// What the accuracy modes decide by, written once for the per-polygon kernel and the four-lane
+// triangle kernel (and the point and visible-area kernels that share them).
+
+/// A safe exponent window: a vector whose largest |component| lies in [Bottom, Top] is squared,
+/// summed and divided without overflow or harmful underflow.
+struct SafeWindow
+{
+  double Bottom, Top;
+};
+/// Double arithmetic (DOUBLE, COMPENSATED, EXACT, and the normalisations).
+constexpr SafeWindow DoubleWindow = { 0x1p-500, 0x1p500 };
+/// FAST's float arithmetic.
+constexpr SafeWindow FloatWindow = { 0x1p-60, 0x1p60 };
+
+/// EXACT: a non-zero coordinate difference below this (once scaled) may have products that
+/// underflowed to zero and would pass for an exact zero; such polygons go to the exact fallback.
+constexpr double TinyDifference = 0x1p-480;
+/// EXACT's certificate: every component's error bound below this relative error (so that
+/// NormalizeFaithful returns a faithful normal) ...
+constexpr double CertifiedRelativeError = 0x1p-56;
+/// ... and no sum of product magnitudes above this (no overflow risk; NaN fails the test).
+constexpr double PermanentLimit = 0x1p900;
+
+/**
+ * One step of the compensated cross product (COMPENSATED and EXACT) for the components held in
+ * the lanes: a1 b2 - a2 b1 with a = ah + al, b = bh + bl (al bl is second order and dropped).
+ * The leading part is added to `sum` by TwoSum and every first-order error term to `err`; with
+ * TrackBound, |p1| + |p2| to `permanent` and |error term| to `errMagnitude` (CompensatedBound).
+ * The per-polygon kernel calls it with the three components of one polygon in the lanes, the
+ * four-lane kernel with one component of four triangles.
+ */
+template <bool TrackBound>
+PHONGVTK_INLINE void CompensatedCrossStep(V4 a1h, V4 a1l, V4 a2h, V4 a2l, V4 b1h, V4 b1l, V4 b2h,
+  V4 b2l, V4& sum, V4& err, V4& permanent, V4& errMagnitude)
+{
+  V4 p1, e1, p2, e2, s, e, t, f;
+  TwoProduct(a1h, b2h, p1, e1);
+  TwoProduct(a2h, b1h, p2, e2);
+  TwoSum(p1, -p2, s, e);
+  TwoSum(sum, s, t, f);
+  sum = t;
+  const V4 first = Fma(a1h, b2l, Fma(a1l, b2h, Fma(-a2h, b1l, -(a2l * b1h))));
+  const V4 term = (e + f) + ((e1 - e2) + first);
+  err += term;
+  if (TrackBound)
+  {
+    permanent += Abs(p1) + Abs(p2);
+    errMagnitude += Abs(term);
+  }
+}
+
+/**
+ * Bound on |(hi + lo) - w_c| per lane, where hi + lo = TwoSum(sum, err) of CompensatedCrossStep
+ * over `triangles` - 1 fan triangles and w the exact area vector: the neglected second-order
+ * products, the rounding of the error accumulator, and an absolute slack for error terms lost to
+ * underflow (at most 2^-1074 per operation).
+ */
+PHONGVTK_INLINE V4 CompensatedBound(V4 permanent, V4 errMagnitude, V4 err, double triangles)
+{
+  const double underflow = 32.0 * triangles * 0x1p-1074;
+  return 64.0 * 0x1p-106 * permanent + (1.01 * triangles * 0x1p-53) * errMagnitude +
+    0x1p-53 * Abs(err) + underflow;
+}
+
+/// Lanes certified by EXACT's filter: no overflow risk and no non-finite input, and either every
+/// product exactly zero (permanent == 0) or the bound within CertifiedRelativeError of |hi|.
+PHONGVTK_INLINE V4i Certified(V4 permanent, V4 bound, V4 hi)
+{
+  return (permanent <= PermanentLimit) &
+    ((permanent == 0.0) | (bound <= CertifiedRelativeError * Abs(hi)));
+}
+
+/// w += a x b, component c being a_(c+1) b_(c+2) - a_(c+2) b_(c+1): the fan's step of FAST and
+/// DOUBLE (R float or double, one polygon) and of their four-lane kernel (R a lane type, one
+/// component of four triangles per lane, from w = 0).
+template <class R>
+PHONGVTK_INLINE void AddCross(const R a[3], const R b[3], R w[3])
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+    w[c] += a[c1] * b[c2] - a[c2] * b[c1];
+  }
+}
+
 /// Largest |component|; NaN when a component is NaN, which std::max alone may drop (a NaN area
 /// vector would then pass the safe-window tests).
 template <class Real>
@@ -296,7 +382,7 @@ inline bool NormalizeDouble(const double w[3], double n[3], double& length, int&
   double m = MaxAbs3(w);
   exponent = 0;
   double v[3] = { w[0], w[1], w[2] };
-  if (!(m >= 0x1p-500 && m <= 0x1p500))
+  if (!(m >= DoubleWindow.Bottom && m <= DoubleWindow.Top))
   {
     if (m == 0.0)
     {
@@ -373,7 +459,7 @@ inline bool NormalizeFaithful(const DD w[3], double n[3], double& length, int& e
   // top of the window: components down to 2^-1522 of the largest stay normal numbers. (Scaled
   // to [1, 2), a component under 2^-1022 of the largest had its high and low parts rounded to
   // subnormals separately and the quotient was off by more than 1 ulp.)
-  const int k = (m >= 0x1p-500 && m <= 0x1p500) ? 0 : Exponent2(m) - 499;
+  const int k = (m >= DoubleWindow.Bottom && m <= DoubleWindow.Top) ? 0 : Exponent2(m) - 499;
   DD v[3];
   for (int c = 0; c < 3; ++c)
   {
@@ -465,12 +551,7 @@ struct FastArith
     return d;
   }
 
-  PHONGVTK_INLINE void Add(const Diff& a, const Diff& b)
-  {
-    this->W[0] += a.V[1] * b.V[2] - a.V[2] * b.V[1];
-    this->W[1] += a.V[2] * b.V[0] - a.V[0] * b.V[2];
-    this->W[2] += a.V[0] * b.V[1] - a.V[1] * b.V[0];
-  }
+  PHONGVTK_INLINE void Add(const Diff& a, const Diff& b) { AddCross(a.V, b.V, this->W); }
 
   void Raw(double w[3]) const
   {
@@ -484,7 +565,7 @@ struct FastArith
   PHONGVTK_INLINE bool Finish(AreaVector& out, bool mustSucceed) const
   {
     const float m = MaxAbs3(this->W);
-    if (m >= 0x1p-60f && m <= 0x1p60f)
+    if (m >= FloatWindow.Bottom && m <= FloatWindow.Top)
     {
       for (int c = 0; c < 3; ++c)
       {
@@ -496,7 +577,7 @@ struct FastArith
     }
     // Large but finite: nothing underflowed that matters, the direct result only needs a scaled
     // normalisation. Tiny, zero or non-finite: the caller re-evaluates on scaled differences.
-    if (!mustSucceed && !(m > 0x1p60f && m <= std::numeric_limits<float>::max()))
+    if (!mustSucceed && !(m > FloatWindow.Top && m <= std::numeric_limits<float>::max()))
     {
       return false;
     }
@@ -561,12 +642,7 @@ struct DoubleArith
     return d;
   }
 
-  PHONGVTK_INLINE void Add(const Diff& a, const Diff& b)
-  {
-    this->W[0] += a.V[1] * b.V[2] - a.V[2] * b.V[1];
-    this->W[1] += a.V[2] * b.V[0] - a.V[0] * b.V[2];
-    this->W[2] += a.V[0] * b.V[1] - a.V[1] * b.V[0];
-  }
+  PHONGVTK_INLINE void Add(const Diff& a, const Diff& b) { AddCross(a.V, b.V, this->W); }
 
   PHONGVTK_INLINE bool Finish(AreaVector& out, bool mustSucceed) const
   {
@@ -594,7 +670,7 @@ struct DoubleArith
   static PHONGVTK_INLINE bool FinishVector(const double w[3], AreaVector& out, bool mustSucceed)
   {
     const double m = MaxAbs3(w);
-    if (m >= 0x1p-500 && m <= 0x1p500)
+    if (m >= DoubleWindow.Bottom && m <= DoubleWindow.Top)
     {
       for (int c = 0; c < 3; ++c)
       {
@@ -607,7 +683,7 @@ struct DoubleArith
     // Large but finite: the direct result only needs a scaled normalisation (re-evaluating on
     // differences scaled down could flush small ones to zero). Tiny, zero or non-finite: the
     // caller re-evaluates on scaled differences.
-    if (!mustSucceed && !(m > 0x1p500 && m <= std::numeric_limits<double>::max()))
+    if (!mustSucceed && !(m > DoubleWindow.Top && m <= std::numeric_limits<double>::max()))
     {
       return false;
     }
@@ -680,23 +756,9 @@ struct CompensatedArith
 
   PHONGVTK_INLINE void Add(const Diff& a, const Diff& b)
   {
-    // Component c of a x b is a_(c+1) b_(c+2) - a_(c+2) b_(c+1), all three lanes at once, with
-    // a = ah + al, b = bh + bl; al * bl is second order and dropped.
-    V4 p1, e1, p2, e2, s, e, t, f;
-    TwoProduct(a.HiYZX, b.HiZXY, p1, e1);
-    TwoProduct(a.HiZXY, b.HiYZX, p2, e2);
-    TwoSum(p1, -p2, s, e);
-    TwoSum(this->S, s, t, f);
-    this->S = t;
-    const V4 first =
-      Fma(a.HiYZX, b.LoZXY, Fma(a.LoYZX, b.HiZXY, Fma(-a.HiZXY, b.LoYZX, -(a.LoZXY * b.HiYZX))));
-    const V4 err = (e + f) + ((e1 - e2) + first);
-    this->Err += err;
-    if (TrackBound)
-    {
-      this->Permanent += Abs(p1) + Abs(p2);
-      this->ErrMagnitude += Abs(err);
-    }
+    // Component c of a x b is a_(c+1) b_(c+2) - a_(c+2) b_(c+1), all three lanes at once.
+    CompensatedCrossStep<TrackBound>(a.HiYZX, a.LoYZX, a.HiZXY, a.LoZXY, b.HiYZX, b.LoYZX, b.HiZXY,
+      b.LoZXY, this->S, this->Err, this->Permanent, this->ErrMagnitude);
   }
 
   void Raw(double w[3]) const
@@ -724,10 +786,9 @@ struct CompensatedArith
    */
   PHONGVTK_INLINE V4 Bound(std::int64_t n) const
   {
-    const double triangles = static_cast<double>(n - 1); // fan triangles + 1
-    const double underflow = 32.0 * triangles * 0x1p-1074;
-    return 64.0 * 0x1p-106 * this->Permanent + (1.01 * triangles * 0x1p-53) * this->ErrMagnitude +
-      0x1p-53 * Abs(this->Err) + underflow;
+    // n - 1: the fan's triangles + 1.
+    return CompensatedBound(
+      this->Permanent, this->ErrMagnitude, this->Err, static_cast<double>(n - 1));
   }
 
   /**
@@ -743,13 +804,7 @@ struct CompensatedArith
   {
     V4 hi, lo;
     TwoSum(this->S, this->Err, hi, lo);
-    const V4 bound = this->Bound(n);
-    // Per component: no overflow risk and no non-finite input (NaN fails every comparison), and
-    // either every product was exactly zero (Permanent == 0) or the bound certifies 2^-56.
-    const V4 limit = { 0x1p900, 0x1p900, 0x1p900, 0x1p900 };
-    const V4 zero = {};
-    const V4i certified =
-      (this->Permanent <= limit) & ((this->Permanent == zero) | (bound <= 0x1p-56 * Abs(hi)));
+    const V4i certified = Certified(this->Permanent, this->Bound(n), hi);
     if (!(certified[0] & certified[1] & certified[2]))
     {
       return false;
@@ -931,7 +986,7 @@ bool HasTinyDifference(const VertexFn& vertex, std::int64_t n, const Scaling& sc
     for (int c = 0; c < 3; ++c)
     {
       const double d = std::fabs(ScaledDifference<Scaled>(p[c], p0[c], scaling, c));
-      if (p[c] != p0[c] && d < 0x1p-480)
+      if (p[c] != p0[c] && d < TinyDifference)
       {
         return true;
       }
@@ -1083,7 +1138,7 @@ inline void CompleteFaithful4(AreaVector* r[4])
 inline bool InFaithfulWindow(const AreaVector& r)
 {
   const double m = MaxAbs3(r.Vector);
-  return m >= 0x1p-500 && m <= 0x1p500;
+  return m >= DoubleWindow.Bottom && m <= DoubleWindow.Top;
 }
 } // namespace detail
 
@@ -1207,28 +1262,17 @@ PHONGVTK_INLINE int LaneBits(Mask m)
 /// Lanes whose three components w_c are all at most `top` in magnitude (NaN is not) and not all
 /// below `bottom`: the safe window of the per-polygon kernel's MaxAbs3 test.
 template <class Lane>
-PHONGVTK_INLINE int InWindow(const Lane w[3], double bottom, double top)
+PHONGVTK_INLINE int InWindow(const Lane w[3], SafeWindow window)
 {
   using E = std::remove_cv_t<std::remove_reference_t<decltype(Lane{}[0])>>;
   const Lane a0 = Abs(w[0]), a1 = Abs(w[1]), a2 = Abs(w[2]);
-  const E lo = static_cast<E>(bottom), hi = static_cast<E>(top);
+  const E lo = static_cast<E>(window.Bottom), hi = static_cast<E>(window.Top);
   return LaneBits((a0 <= hi) & (a1 <= hi) & (a2 <= hi) & ((a0 >= lo) | (a1 >= lo) | (a2 >= lo)));
-}
-
-/// The cross product a x b component by component, added to zero as the fan's accumulator is.
-template <class Lane>
-PHONGVTK_INLINE void Cross4(const Lane a[3], const Lane b[3], Lane w[3])
-{
-  for (int c = 0; c < 3; ++c)
-  {
-    const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-    w[c] = Lane{} + (a[c1] * b[c2] - a[c2] * b[c1]);
-  }
 }
 
 /**
  * DOUBLE's area vectors of four triangles, without their normals; a lane is complete (as the
- * per-polygon kernel would leave it, exponent 0) where InWindow(w, 2^-500, 2^500) holds.
+ * per-polygon kernel would leave it, exponent 0) where InWindow(w, DoubleWindow) holds.
  */
 template <class T>
 PHONGVTK_INLINE void DoubleAreaVectors4(const T* const corner[3][4], V4 w[3])
@@ -1239,8 +1283,9 @@ PHONGVTK_INLINE void DoubleAreaVectors4(const T* const corner[3][4], V4 w[3])
     const V4 p0 = GatherAxis<V4>(corner[0], c);
     a[c] = GatherAxis<V4>(corner[1], c) - p0;
     b[c] = GatherAxis<V4>(corner[2], c) - p0;
+    w[c] = V4{};
   }
-  Cross4(a, b, w);
+  AddCross(a, b, w);
 }
 
 /// DOUBLE's (and COMPENSATED's) completion of in-window area vectors: w / |w|.
@@ -1252,7 +1297,7 @@ PHONGVTK_INLINE void NormalizeDouble4(const V4 w[3], TriangleLanes& out)
     out.Vector[c] = w[c];
     out.Normal[c] = w[c] / out.Length;
   }
-  out.Done = InWindow(w, 0x1p-500, 0x1p500);
+  out.Done = InWindow(w, DoubleWindow);
 }
 
 template <class T>
@@ -1266,8 +1311,9 @@ PHONGVTK_INLINE void FastTriangles4(const T* const corner[3][4], TriangleLanes& 
     const Point p0 = GatherAxis<Point>(corner[0], c);
     a[c] = __builtin_convertvector(GatherAxis<Point>(corner[1], c) - p0, V4f);
     b[c] = __builtin_convertvector(GatherAxis<Point>(corner[2], c) - p0, V4f);
+    w[c] = V4f{};
   }
-  Cross4(a, b, w);
+  AddCross(a, b, w);
   const V4f squares = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
 #if defined(__SSE__)
   const V4f length = reinterpret_cast<V4f>(_mm_sqrt_ps(reinterpret_cast<__m128>(squares)));
@@ -1282,7 +1328,7 @@ PHONGVTK_INLINE void FastTriangles4(const T* const corner[3][4], TriangleLanes& 
     out.Normal[c] = __builtin_convertvector(w[c] * inverse, V4);
   }
   out.Length = __builtin_convertvector(length, V4);
-  out.Done = InWindow(w, 0x1p-60, 0x1p60);
+  out.Done = InWindow(w, FloatWindow);
 }
 
 template <class T>
@@ -1307,18 +1353,14 @@ struct CertifiedLanes
 PHONGVTK_INLINE void FinishCertified4(const V4 sum[3], const V4 err[3], const V4 permanent[3],
   const V4 errMagnitude[3], V4i tiny, CertifiedLanes& w)
 {
-  const double triangles = 2.0;
-  const double underflow = 32.0 * triangles * 0x1p-1074;
   w.Tiny = tiny;
   w.Certified = ~tiny;
   for (int c = 0; c < 3; ++c)
   {
     TwoSum(sum[c], err[c], w.Hi[c], w.Lo[c]);
-    w.Bound[c] = 64.0 * 0x1p-106 * permanent[c] + (1.01 * triangles * 0x1p-53) * errMagnitude[c] +
-      0x1p-53 * Abs(err[c]) + underflow;
+    w.Bound[c] = CompensatedBound(permanent[c], errMagnitude[c], err[c], 2.0); // n - 1, n = 3
     w.Permanent[c] = permanent[c];
-    w.Certified &=
-      (permanent[c] <= 0x1p900) & ((permanent[c] == 0.0) | (w.Bound[c] <= 0x1p-56 * Abs(w.Hi[c])));
+    w.Certified &= Certified(permanent[c], w.Bound[c], w.Hi[c]);
   }
 }
 
@@ -1341,25 +1383,17 @@ PHONGVTK_INLINE void CompensatedTriangles4(
     TwoSum(p2, -p0, bHi[c], bLo[c]);
     if (Exact)
     {
-      tiny |= ((p1 != p0) & (Abs(aHi[c]) < 0x1p-480)) | ((p2 != p0) & (Abs(bHi[c]) < 0x1p-480));
+      tiny |= ((p1 != p0) & (Abs(aHi[c]) < TinyDifference)) |
+        ((p2 != p0) & (Abs(bHi[c]) < TinyDifference));
     }
   }
-  V4 sum[3], err[3], permanent[3], errMagnitude[3];
+  // The per-polygon kernel's one fan step from zero accumulators, a component at a time.
+  V4 sum[3] = {}, err[3] = {}, permanent[3] = {}, errMagnitude[3] = {};
   for (int c = 0; c < 3; ++c)
   {
     const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-    V4 p1, e1, p2, e2, s, e, t, f;
-    TwoProduct(aHi[c1], bHi[c2], p1, e1);
-    TwoProduct(aHi[c2], bHi[c1], p2, e2);
-    TwoSum(p1, -p2, s, e);
-    TwoSum(V4{}, s, t, f);
-    sum[c] = t;
-    const V4 first =
-      Fma(aHi[c1], bLo[c2], Fma(aLo[c1], bHi[c2], Fma(-aHi[c2], bLo[c1], -(aLo[c2] * bHi[c1]))));
-    const V4 termErr = (e + f) + ((e1 - e2) + first);
-    err[c] = V4{} + termErr;
-    permanent[c] = V4{} + (Abs(p1) + Abs(p2));
-    errMagnitude[c] = V4{} + Abs(termErr);
+    CompensatedCrossStep<Exact>(aHi[c1], aLo[c1], aHi[c2], aLo[c2], bHi[c1], bLo[c1], bHi[c2],
+      bLo[c2], sum[c], err[c], permanent[c], errMagnitude[c]);
   }
   if (!Exact)
   {
@@ -1387,7 +1421,7 @@ PHONGVTK_INLINE void CompensatedTriangles4(
   {
     out.Vector[c] = hi[c] + lo[c];
   }
-  out.Done = LaneBits(certified) & InWindow(hi, 0x1p-500, 0x1p500);
+  out.Done = LaneBits(certified) & InWindow(hi, DoubleWindow);
 }
 } // namespace detail
 

@@ -235,7 +235,7 @@ PHONGVTK_INLINE void WriteNormals4(const double s[4][3], O* normals)
   {
     v[c] = V4{ s[0][c], s[1][c], s[2][c], s[3][c] };
   }
-  const int window = detail::InWindow(v, 0x1p-500, 0x1p500);
+  const int window = detail::InWindow(v, detail::DoubleWindow);
   const V4 length = detail::Sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
   V4 n[3];
   for (int c = 0; c < 3; ++c)
@@ -479,7 +479,7 @@ struct PointNormalPass
           TriangleCorners(pts, offsets, conn, cell, corner);
           detail::V4 w[3];
           detail::DoubleAreaVectors4<T>(corner, w);
-          const int done = detail::InWindow(w, 0x1p-500, 0x1p500);
+          const int done = detail::InWindow(w, detail::DoubleWindow);
           // InvariantSums::TopOf of the four faces (in the window: normal, non-zero).
           detail::V4i tops = {};
           if constexpr (std::is_same<Range, PointRange<SumPass::Count>>::value)

@@ -115,7 +115,7 @@ struct ScaledSum
   void Renormalize()
   {
     const double m = detail::MaxAbs3(this->S);
-    if (!(m <= 0x1p500) || (m < 0x1p-500 && m != 0.0))
+    if (!(m <= detail::DoubleWindow.Top) || (m < detail::DoubleWindow.Bottom && m != 0.0))
     {
       if (!std::isfinite(m))
       {

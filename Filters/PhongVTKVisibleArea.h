@@ -62,6 +62,29 @@ struct VisibleAreaResult
 
 namespace detail
 {
+// EXACT's certificate, written once for one polygon (R double) and for four triangles (R V4).
+
+/// Error bound of S = sum of n exact differences E - p_i summed in double-double, from the sum of
+/// their magnitudes.
+template <class R>
+PHONGVTK_INLINE R EyeSumBound(R magnitude, double n)
+{
+  return 1.01 * n * (0x1p-100 * magnitude + 0x1p-1070);
+}
+
+/// Error bound of D = v.w from the propagated input errors `err` and the magnitude of the
+/// products: certified when it is within CertifiedRelativeError of |D|.
+template <class R>
+PHONGVTK_INLINE R DotBound(R err, R magnitude)
+{
+  return 1.01 * (err + 0x1p-100 * magnitude) + 0x1p-1060;
+}
+
+/// The smallest |S| the eye vector is scaled from (below it, the exact fallback decides).
+constexpr double EyeSumBottom = 0x1p-900;
+/// The view vector's certificate: its summed error bounds within this of its norm.
+constexpr double ViewRelativeError = 0x1p-58;
+
 /// Exact fallback of the EXACT mode in GMP integers (PhongVTKExactAreaVector.cxx).
 VisibleAreaResult ExactVisibleArea(
   const double* xyz, std::int64_t n, const double vector[3], bool eye);
@@ -237,15 +260,15 @@ inline bool CertifiedVisibleArea(const DD v[3], const double vErr[3], const DD w
     err += av * wErr[c] + aw * vErr[c] + vErr[c] * wErr[c];
   }
   d = Add(d, DD{ cross, 0.0 });
-  err = 1.01 * (err + 0x1p-100 * magnitude) + 0x1p-1060;
-  if (!(err <= 0x1p-56 * std::fabs(d.Hi)))
+  err = DotBound(err, magnitude);
+  if (!(err <= CertifiedRelativeError * std::fabs(d.Hi)))
   {
     return false;
   }
   // A direction's norm is the same for every polygon (and exact: vErr = 0).
   double inverse = direction ? direction->NormInverse : 0.0;
   const DD norm = direction ? direction->Norm : NormInWindow(v, inverse);
-  if (!(1.01 * (vErr[0] + vErr[1] + vErr[2]) <= 0x1p-58 * norm.Hi))
+  if (!(1.01 * (vErr[0] + vErr[1] + vErr[2]) <= ViewRelativeError * norm.Hi))
   {
     return false;
   }
@@ -270,16 +293,16 @@ bool EyeVectorDD(
       sum = Add(sum, d);
       magnitude += std::fabs(d.Hi);
     }
-    if (!(magnitude <= 0x1p900))
+    if (!(magnitude <= PermanentLimit))
     {
       return false;
     }
     s[c] = sum;
-    sErr[c] = 1.01 * static_cast<double>(n) * (0x1p-100 * magnitude + 0x1p-1070);
+    sErr[c] = EyeSumBound(magnitude, static_cast<double>(n));
   }
   double hi[3] = { s[0].Hi, s[1].Hi, s[2].Hi };
   const double m = MaxAbs3(hi);
-  if (!(m > 0x1p-900))
+  if (!(m > EyeSumBottom))
   {
     return false;
   }
@@ -312,7 +335,7 @@ VisibleAreaResult ExactVisibleAreaOf(const VertexFn& vertex, std::int64_t n, con
   bool ok = true, anyZero = false, allZero = true;
   for (int c = 0; c < 3; ++c)
   {
-    ok = ok && acc.Permanent[c] <= 0x1p900; // no overflow risk, no NaN
+    ok = ok && acc.Permanent[c] <= PermanentLimit; // no overflow risk, no NaN
     w[c] = { hi[c], lo[c] };
     wZero[c] = acc.Permanent[c] == 0.0; // every product exactly zero (unless one underflowed)
     wErr[c] = wZero[c] ? 0.0 : bound[c];
@@ -480,13 +503,13 @@ PHONGVTK_INLINE V4i EyeVectorsDD4(
       Add4(sumHi, sumLo, dHi, dLo);
       magnitude += Abs(dHi);
     }
-    ok &= magnitude <= 0x1p900;
+    ok &= magnitude <= PermanentLimit;
     hi[c] = sumHi;
     lo[c] = sumLo;
-    err[c] = 1.01 * 3.0 * (0x1p-100 * magnitude + 0x1p-1070);
+    err[c] = EyeSumBound(magnitude, 3.0);
   }
   const V4 m = MaxAbs4(hi);
-  ok &= m > 0x1p-900;
+  ok &= m > EyeSumBottom;
   const V4 scale = InverseBinade(m); // EyeVectorDD's Scale2(x, -k)
   for (int c = 0; c < 3; ++c)
   {
@@ -511,7 +534,7 @@ PHONGVTK_INLINE int CertifiedVisibleAreas4(const V4 vHi[3], const V4 vLo[3], con
   V4 wErr[3];
   for (int c = 0; c < 3; ++c)
   {
-    ok &= w.Permanent[c] <= 0x1p900;
+    ok &= w.Permanent[c] <= PermanentLimit;
     wZero[c] = w.Permanent[c] == 0.0;
     wErr[c] = wZero[c] ? V4{} : w.Bound[c];
     allZero &= wZero[c];
@@ -535,9 +558,9 @@ PHONGVTK_INLINE int CertifiedVisibleAreas4(const V4 vHi[3], const V4 vLo[3], con
     err = wZero[c] ? err : errNext;
   }
   Add4(dHi, dLo, cross, V4{});
-  err = 1.01 * (err + 0x1p-100 * magnitude) + 0x1p-1060;
-  V4i certified = err <= 0x1p-56 * Abs(dHi);
-  certified &= 1.01 * (vErr[0] + vErr[1] + vErr[2]) <= 0x1p-58 * normHi;
+  err = DotBound(err, magnitude);
+  V4i certified = err <= CertifiedRelativeError * Abs(dHi);
+  certified &= 1.01 * (vErr[0] + vErr[1] + vErr[2]) <= ViewRelativeError * normHi;
   // DivideDD by the norm.
   const V4 q1 = dHi * normInverse;
   const V4 rem = Fma(-q1, normHi, dHi) + (dLo - q1 * normLo);
@@ -592,7 +615,7 @@ PHONGVTK_INLINE int VisibleAreas4(const T* const corner[3][4], const View& view,
   else if constexpr (A == Accuracy::Double)
   {
     DoubleAreaVectors4<T>(corner, w);
-    done = InWindow(w, 0x1p-500, 0x1p500);
+    done = InWindow(w, DoubleWindow);
   }
   else
   {

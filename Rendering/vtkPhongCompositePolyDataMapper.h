@@ -118,8 +118,7 @@ private:
   vtkPhongCompositePolyDataMapper(const vtkPhongCompositePolyDataMapper&) = delete;
   void operator=(const vtkPhongCompositePolyDataMapper&) = delete;
 
-  friend class vtkPhongCompositeBlockMapper; // Configure, RememberShaders
-  friend class vtkPhongCompositeDelegator;
+  friend class vtkPhongCompositeDelegator; // Configure
 
   // The last render's first Phong triangles (helpers die with the window's resources).
   std::string VertexSource;

@@ -4,105 +4,29 @@
 // Phong model's shader code.
 #include "vtkPhongCompositePolyDataMapper.h"
 
-#include "PhongVTKMapperCore.h"
+#include "PhongVTKBlockMapper.h"
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBatchedPolyDataMapper.h"
 #include "vtkOpenGLCompositePolyDataMapperDelegator.h"
 
 //------------------------------------------------------------------------------
-class vtkPhongCompositeBlockMapper : public vtkOpenGLBatchedPolyDataMapper
+class vtkPhongCompositeBlockMapper : public phongvtk::BlockMapper<vtkOpenGLBatchedPolyDataMapper>
 {
 public:
   static vtkPhongCompositeBlockMapper* New();
-  vtkTypeMacro(vtkPhongCompositeBlockMapper, vtkOpenGLBatchedPolyDataMapper);
-
-  phongvtk::MapperState State;
+  vtkTypeMacro(vtkPhongCompositeBlockMapper, phongvtk::BlockMapper<vtkOpenGLBatchedPolyDataMapper>);
 
 protected:
-  vtkPhongCompositeBlockMapper() { this->State.Triangles = &this->Primitives[PrimitiveTris]; }
+  vtkPhongCompositeBlockMapper() = default;
   ~vtkPhongCompositeBlockMapper() override = default;
-
-  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-  void UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-  void BuildShaders(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderColor(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderNormal(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderLight(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderPositionVC(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void SetLightingShaderParameters(
-    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
 private:
   vtkPhongCompositeBlockMapper(const vtkPhongCompositeBlockMapper&) = delete;
   void operator=(const vtkPhongCompositeBlockMapper&) = delete;
-  friend struct phongvtk::MapperCore<vtkPhongCompositeBlockMapper>;
 };
 
 vtkStandardNewMacro(vtkPhongCompositeBlockMapper);
-
-//------------------------------------------------------------------------------
-// The Phong model's overrides (PhongVTKMapperCore.h).
-bool vtkPhongCompositeBlockMapper::GetNeedToRebuildShaders(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
-{
-  return phongvtk::MapperCore<vtkPhongCompositeBlockMapper>::GetNeedToRebuildShaders(
-    *this, this->State, cellBO, ren, act);
-}
-
-void vtkPhongCompositeBlockMapper::UpdateShaders(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
-{
-  phongvtk::MapperCore<vtkPhongCompositeBlockMapper>::UpdateShaders(
-    *this, this->State, cellBO, ren, act);
-}
-
-void vtkPhongCompositeBlockMapper::BuildShaders(
-  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
-{
-  phongvtk::MapperCore<vtkPhongCompositeBlockMapper>::BuildShaders(
-    *this, this->State, shaders, ren, act);
-}
-
-void vtkPhongCompositeBlockMapper::ReplaceShaderColor(
-  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
-{
-  phongvtk::MapperCore<vtkPhongCompositeBlockMapper>::ReplaceShaderColor(
-    *this, this->State, shaders, ren, act);
-}
-
-void vtkPhongCompositeBlockMapper::ReplaceShaderNormal(
-  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
-{
-  phongvtk::MapperCore<vtkPhongCompositeBlockMapper>::ReplaceShaderNormal(
-    *this, this->State, shaders, ren, act);
-}
-
-void vtkPhongCompositeBlockMapper::ReplaceShaderLight(
-  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
-{
-  phongvtk::MapperCore<vtkPhongCompositeBlockMapper>::ReplaceShaderLight(
-    *this, this->State, shaders, ren, act);
-}
-
-void vtkPhongCompositeBlockMapper::ReplaceShaderPositionVC(
-  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
-{
-  phongvtk::MapperCore<vtkPhongCompositeBlockMapper>::ReplaceShaderPositionVC(
-    *this, this->State, shaders, ren, act);
-}
-
-void vtkPhongCompositeBlockMapper::SetLightingShaderParameters(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
-{
-  phongvtk::MapperCore<vtkPhongCompositeBlockMapper>::SetLightingShaderParameters(
-    *this, this->State, cellBO, ren, act);
-}
 
 //------------------------------------------------------------------------------
 // VTK's OpenGL delegator with a Phong block mapper as its delegate.

@@ -449,10 +449,10 @@ def write_atomically(writer, path, progress):
 
 def writes_through_memory(writer):
     """Whether `writer` writes into memory first (and Python then to the file): VTK's XML writer
-    from 9.3 on (measured on 9.6.2) frees its position arrays twice when a write fails (a full
-    disk, ulimit -f) and aborts the process. In inline binary mode the document is ASCII."""
-    return (isinstance(writer, vtkXMLPolyDataWriter)
-            and (vtkVersion.GetVTKMajorVersion(), vtkVersion.GetVTKMinorVersion()) >= (9, 3))
+    crashes when a write fails (a full disk, ulimit -f) in VTK 9.1 (SIGSEGV) and 9.6.2 (it frees
+    its position arrays twice), so VTP always goes through memory. In inline binary mode the
+    document is ASCII."""
+    return isinstance(writer, vtkXMLPolyDataWriter)
 
 
 def usual_mode(path):

@@ -516,7 +516,7 @@ def test_memory_harness_measures_a_filters_peak_in_a_child(environment):
     normals_mib = 998002 * 3 * 4 / 2**20  # the point normals alone, float
     assert result["peak MiB"] > normals_mib
     assert result["output MiB"] > normals_mib
-    assert result["backend"] in ("Sequential", "STDThread")
+    assert result["backend"] in ("Sequential", "STDThread", "TBB", "OpenMP")  # Debian's VTK 9.1: TBB
 
 
 def test_speed_harness_warms_up_and_calls_untimed_before_every_batch():
