@@ -17,17 +17,53 @@
 #include "vtkWeakPointer.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <dlfcn.h>
-
 #include <mutex>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace
 {
-// The headless window whose context this thread made current last (for PushContext), weak: a
-// window may be deleted anywhere, on any thread.
-thread_local vtkWeakPointer<vtkHeadlessRenderWindow> CurrentOnThread;
+// The headless window whose context this thread made current last (for PushContext): plain
+// values, no destructor. exit() destroys the thread_local objects of the thread that calls it
+// before the static ones, and a window kept in a static object makes its context current again
+// when it is destroyed: a thread_local vtkWeakPointer was then used after its destruction (VTK
+// 9.1's corrupted the heap). A window may be deleted anywhere, on any thread: the record names
+// a window only while the window of that serial number is alive (Alive). No weak pointer is
+// taken to a window either: VTK clears an object's weak pointers when its count drops to zero,
+// before its destructors run (which make the context current to release resources), and one
+// taken then was freed twice by VTK 9.1.
+struct CurrentRecord
+{
+  vtkHeadlessRenderWindow* Window;
+  std::uint64_t Serial;
+};
+thread_local CurrentRecord CurrentOnThread = { nullptr, 0 };
+
+// The live headless windows and their serial numbers. Never destroyed: windows in static
+// objects outlive every static object made after them.
+struct LiveWindows
+{
+  std::mutex Mutex;
+  std::unordered_map<const vtkHeadlessRenderWindow*, std::uint64_t> Serials;
+  std::uint64_t Next = 0;
+};
+LiveWindows& Live()
+{
+  static LiveWindows* live = new LiveWindows;
+  return *live;
+}
+
+// `window` while the window of that serial number lives, else null.
+vtkHeadlessRenderWindow* Alive(vtkHeadlessRenderWindow* window, std::uint64_t serial)
+{
+  LiveWindows& live = Live();
+  std::lock_guard<std::mutex> lock(live.Mutex);
+  const auto found = live.Serials.find(window);
+  return found != live.Serials.end() && found->second == serial ? window : nullptr;
+}
 
 // A thread that ends with a context current would keep it bound forever (EGL contexts stay
 // current to a dead thread): release it when a thread that bound one ends.
@@ -280,6 +316,10 @@ vtkHeadlessRenderWindow::vtkHeadlessRenderWindow()
   // Reproducible images: the same scene gives the same pixels on every run and backend.
   this->MultiSamples = 0;
   this->ScreenSize[0] = this->ScreenSize[1] = 0;
+  LiveWindows& live = Live();
+  std::lock_guard<std::mutex> lock(live.Mutex);
+  this->Serial = ++live.Next;
+  live.Serials[this] = this->Serial;
 }
 
 //------------------------------------------------------------------------------
@@ -292,6 +332,9 @@ vtkHeadlessRenderWindow::~vtkHeadlessRenderWindow()
   {
     renderer->SetRenderWindow(nullptr);
   }
+  LiveWindows& live = Live();
+  std::lock_guard<std::mutex> lock(live.Mutex);
+  live.Serials.erase(this);
 }
 
 //------------------------------------------------------------------------------
@@ -468,13 +511,7 @@ void vtkHeadlessRenderWindow::MakeCurrent()
 //------------------------------------------------------------------------------
 void vtkHeadlessRenderWindow::RecordCurrent()
 {
-  // VTK clears an object's weak pointers when its count drops to zero, before the destructors
-  // run (which still make the context current to release resources): a weak pointer taken then
-  // would never be cleared.
-  if (CurrentOnThread != this && this->GetReferenceCount() > 0)
-  {
-    CurrentOnThread = this;
-  }
+  CurrentOnThread = { this, this->Serial };
 }
 
 //------------------------------------------------------------------------------
@@ -510,9 +547,9 @@ void vtkHeadlessRenderWindow::SetForceMakeCurrent()
 //------------------------------------------------------------------------------
 void vtkHeadlessRenderWindow::PushContext()
 {
-  vtkHeadlessRenderWindow* previous =
-    CurrentOnThread && CurrentOnThread->IsCurrent() ? CurrentOnThread.GetPointer() : nullptr;
-  this->ContextStack.emplace_back(previous);
+  vtkHeadlessRenderWindow* previous = Alive(CurrentOnThread.Window, CurrentOnThread.Serial);
+  previous = previous && previous->IsCurrent() ? previous : nullptr;
+  this->ContextStack.emplace_back(previous, previous ? CurrentOnThread.Serial : 0);
   if (previous != this)
   {
     this->MakeCurrent();
@@ -527,7 +564,8 @@ void vtkHeadlessRenderWindow::PopContext()
     return;
   }
   // Null also when the window that was current has been deleted since.
-  vtkHeadlessRenderWindow* previous = this->ContextStack.back();
+  vtkHeadlessRenderWindow* previous =
+    Alive(this->ContextStack.back().first, this->ContextStack.back().second);
   this->ContextStack.pop_back();
   if (previous == this)
   {

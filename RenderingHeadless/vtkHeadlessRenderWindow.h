@@ -40,10 +40,10 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPhongVTKRenderingHeadlessModule.h" // for export macro
 
-#include "vtkWeakPointer.h" // for the context stack
-
-#include <string> // for std::string
-#include <vector> // for std::vector
+#include <cstdint> // for std::uint64_t
+#include <string>  // for std::string
+#include <utility> // for std::pair
+#include <vector>  // for std::vector
 
 class VTKPHONGVTKRENDERINGHEADLESS_EXPORT vtkHeadlessRenderWindow : public vtkOpenGLRenderWindow
 {
@@ -175,7 +175,10 @@ private:
   std::string ContextProblem;
   int LargestFramebuffer = 0; // pixels a side; 0 until the context is initialised
   bool SizeReported = false;  // the window's size was reported too large
-  std::vector<vtkWeakPointer<vtkHeadlessRenderWindow>> ContextStack;
+  // The windows current before each PushContext, with their serial numbers (no weak pointers:
+  // see CurrentOnThread in the .cxx).
+  std::vector<std::pair<vtkHeadlessRenderWindow*, std::uint64_t>> ContextStack;
+  std::uint64_t Serial = 0; // tells this window from a later one at the same address
   int ScreenSize[2];
 };
 
