@@ -207,18 +207,21 @@ def check_surface(mesh, path):
     raise CommandError(f"'{path}' is not a surface: it holds {holds}, no polygons or strips")
 
 
-#: vtkPolyData's cell arrays in its cell order, with the noun of one of their cells.
-CELL_ARRAYS = (("GetVerts", "vertex cell"), ("GetLines", "line"), ("GetPolys", "polygon"),
-               ("GetStrips", "triangle strip"))
+#: vtkPolyData's cell arrays in its cell order, with the noun of one of their cells and the
+#: fewest points such a cell has.
+CELL_ARRAYS = (("GetVerts", "vertex cell", 1), ("GetLines", "line", 2), ("GetPolys", "polygon", 3),
+               ("GetStrips", "triangle strip", 3))
 
 
 def check_cells(mesh, path):
     """Raises CommandError when a cell array of `mesh` (read from `path`) does not describe its
     cells (offsets that do not start at 0, decrease, or do not end at the connectivity's
     length) or a cell refers to a point the mesh does not have: what VTK's legacy and XML
-    readers build from a corrupt file without a word."""
+    readers build from a corrupt file without a word. Cells of too few points pass where this
+    VTK can hold them (check_cell_types)."""
     points = mesh.GetNumberOfPoints()
-    for getter, noun in CELL_ARRAYS:
+    short = None
+    for getter, noun, fewest in CELL_ARRAYS:
         cells = getattr(mesh, getter)()
         if cells is None or cells.GetNumberOfCells() == 0:
             continue
@@ -235,6 +238,28 @@ def check_cells(mesh, path):
             cell = int(np.searchsorted(offsets, outside[0], side="right")) - 1
             raise CommandError(f"'{path}' is corrupt: {noun} {cell} refers to point "
                                f"{ids[outside[0]]}; the mesh has {points} points")
+        small = np.flatnonzero(np.diff(offsets) < fewest)
+        if small.size and short is None:
+            cell = int(small[0])
+            short = f"{noun} {cell} has {offsets[cell + 1] - offsets[cell]} point(s)"
+    if short is not None:
+        check_cell_types(mesh, path, short)
+
+
+def check_cell_types(mesh, path, described):
+    """Raises CommandError when this VTK cannot give the cells of `mesh` (read from `path`)
+    their types. VTK 9.1 refuses a polygon of fewer than 3 points (the first such cell is
+    `described`) when it builds its cell map, and its writers then die with SIGSEGV; later
+    VTKs take such cells as they are, and the filters flag them."""
+    errors = []
+    tag = mesh.AddObserver("ErrorEvent", lambda caller, event: errors.append(event))
+    try:
+        mesh.BuildCells()
+    finally:
+        mesh.RemoveObserver(tag)
+    if errors:
+        raise CommandError(f"'{path}': {described}, which this VTK "
+                           f"({vtkVersion.GetVTKVersion()}) cannot hold")
 
 
 def drop_mismatched_arrays(mesh, path, progress):

@@ -49,8 +49,10 @@ def expect_clean_error(result, *words):
         assert word in lines[0], (word, lines[0])
 
 
+#: The VTK in use (major, minor).
+VTK_VERSION = (vtkVersion.GetVTKMajorVersion(), vtkVersion.GetVTKMinorVersion())
 #: Whether the VTK in use is 9.3 or later, whose readers differ from 9.1/9.2's on some files.
-VTK_AT_LEAST_9_3 = (vtkVersion.GetVTKMajorVersion(), vtkVersion.GetVTKMinorVersion()) >= (9, 3)
+VTK_AT_LEAST_9_3 = VTK_VERSION >= (9, 3)
 
 
 def polygons_of(path):
@@ -313,7 +315,10 @@ CONNECTIVITY vtktypeint64
 def test_legacy_vtk_cells_that_are_not_cells_are_an_error(cli, tmp_path, offsets, ids, words):
     (tmp_path / "in.vtk").write_text(LEGACY.format(offsets=offsets, ids=ids))
     result = cli("normals", "in.vtk", "-o", "out.vtp", "-q")
-    if words is None:
+    if offsets == "0 4 6" and VTK_VERSION < (9, 2):
+        # VTK 9.1 cannot type a polygon of 2 points (its writers then died with SIGSEGV).
+        expect_clean_error(result, "in.vtk", "polygon 1 has 2 point(s)", "9.1")
+    elif words is None:
         assert result.returncode == 0, result.stderr
     else:
         expect_clean_error(result, "in.vtk", "corrupt", words)
