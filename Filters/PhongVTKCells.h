@@ -7,16 +7,22 @@
 #define PhongVTKCells_h
 
 #include "PhongVTKKernelNamespace.h"
+#include "vtkAOSDataArrayTemplate.h"
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
+#include "vtkTypeInt64Array.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <type_traits>
+#include <utility>
 
 namespace phongvtk
 {
@@ -63,15 +69,106 @@ inline const unsigned char* CellGhostFlags(vtkPolyData* input)
   return ghosts->GetPointer(0);
 }
 
-/// vtkCellArray::Visit functor handing the typed offsets and connectivity pointers to `fn`.
-struct RawCells
+/// Whether `cells` keeps its offsets and point ids in plain 32- or 64-bit arrays of one type,
+/// the storage the filters read through raw pointers: always up to VTK 9.5; VTK 9.6 adds
+/// fixed-size cells (implicit offsets: vtkFlyingEdges3D's triangles) and arrays of any type.
+inline bool IsPlainStorage(vtkCellArray* cells)
 {
-  template <class CellStateT, class Fn>
-  void operator()(CellStateT& state, Fn&& fn) const
+  using Plain32 = vtkAOSDataArrayTemplate<vtkTypeInt32>;
+  using Plain64 = vtkAOSDataArrayTemplate<vtkTypeInt64>;
+  vtkDataArray* offsets = cells->GetOffsetsArray();
+  vtkDataArray* connectivity = cells->GetConnectivityArray();
+  return (vtkArrayDownCast<Plain64>(offsets) && vtkArrayDownCast<Plain64>(connectivity)) ||
+    (vtkArrayDownCast<Plain32>(offsets) && vtkArrayDownCast<Plain32>(connectivity));
+}
+
+/// `cells` itself when its storage is plain (IsPlainStorage), else a copy in plain 64-bit arrays
+/// (a copy of both arrays: VTK's own storage conversion frees the arrays it converts from,
+/// which the copy would share with the input).
+inline vtkSmartPointer<vtkCellArray> PlainCells(vtkCellArray* cells)
+{
+  if (!cells || IsPlainStorage(cells))
   {
-    fn(state.GetOffsets()->GetPointer(0), state.GetConnectivity()->GetPointer(0));
+    return cells;
   }
-};
+  auto offsets = vtkSmartPointer<vtkTypeInt64Array>::New();
+  auto connectivity = vtkSmartPointer<vtkTypeInt64Array>::New();
+  offsets->DeepCopy(cells->GetOffsetsArray());
+  connectivity->DeepCopy(cells->GetConnectivityArray());
+  auto plain = vtkSmartPointer<vtkCellArray>::New();
+  plain->SetData(offsets, connectivity);
+  return plain;
+}
+
+/// `mesh` itself when all its cell arrays are in plain storage, else a shallow copy whose cell
+/// arrays are (PlainCells): what a filter reads its input through.
+inline vtkSmartPointer<vtkPolyData> PlainCells(vtkPolyData* mesh)
+{
+  vtkCellArray* arrays[4] = { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(),
+    mesh->GetStrips() };
+  if (std::all_of(std::begin(arrays), std::end(arrays),
+        [](vtkCellArray* cells) { return !cells || IsPlainStorage(cells); }))
+  {
+    return mesh;
+  }
+  auto plain = vtkSmartPointer<vtkPolyData>::New();
+  plain->ShallowCopy(mesh);
+  plain->SetVerts(PlainCells(arrays[0]));
+  plain->SetLines(PlainCells(arrays[1]));
+  plain->SetPolys(PlainCells(arrays[2]));
+  plain->SetStrips(PlainCells(arrays[3]));
+  return plain;
+}
+
+/// Calls fn(offsets, connectivity) with the raw pointers of `plain`, a cell array in plain
+/// storage; the point ids writable when `Writable`.
+template <bool Writable, class Fn>
+inline void CallWithRawPointers(vtkCellArray* plain, Fn&& fn)
+{
+  const auto call = [&](auto* offsets, auto* connectivity)
+  {
+    using Id = std::remove_pointer_t<decltype(connectivity)>;
+    fn(static_cast<const std::remove_pointer_t<decltype(offsets)>*>(offsets),
+      static_cast<std::conditional_t<Writable, Id*, const Id*>>(connectivity));
+  };
+  using Plain32 = vtkAOSDataArrayTemplate<vtkTypeInt32>;
+  using Plain64 = vtkAOSDataArrayTemplate<vtkTypeInt64>;
+  if (auto* offsets64 = vtkArrayDownCast<Plain64>(plain->GetOffsetsArray()))
+  {
+    call(offsets64->GetPointer(0),
+      vtkArrayDownCast<Plain64>(plain->GetConnectivityArray())->GetPointer(0));
+  }
+  else
+  {
+    call(vtkArrayDownCast<Plain32>(plain->GetOffsetsArray())->GetPointer(0),
+      vtkArrayDownCast<Plain32>(plain->GetConnectivityArray())->GetPointer(0));
+  }
+}
+
+/**
+ * Calls fn(offsets, connectivity) with const pointers to the raw offsets and point ids of
+ * `cells` (32- or 64-bit integers); for storage that is not plain, those of a plain copy.
+ */
+template <class Fn>
+inline void ForRawCells(vtkCellArray* cells, Fn&& fn)
+{
+  const vtkSmartPointer<vtkCellArray> plain = PlainCells(cells);
+  CallWithRawPointers<false>(plain, std::forward<Fn>(fn));
+}
+
+/**
+ * Calls fn(offsets, connectivity) with the raw offsets (const) and the point ids (to be
+ * written) of `cells`, a cell array the filter made and owns, first made plain in place.
+ */
+template <class Fn>
+inline void ForOwnRawCells(vtkCellArray* cells, Fn&& fn)
+{
+  if (!IsPlainStorage(cells))
+  {
+    cells->ShallowCopy(PlainCells(cells));
+  }
+  CallWithRawPointers<true>(cells, std::forward<Fn>(fn));
+}
 
 /**
  * Asks the memory for the point ids a kilobyte past cell `cell`'s: the passes read the

@@ -587,7 +587,7 @@ void ForPointFans(vtkIdType numPoints, vtkCellArray* polys, Links& links, bool a
   N* neighbours = records.Neighbours;
   const bool pairs = neighbours && records.NonManifold;
   std::atomic<bool> stop(false);
-  polys->Visit(RawCells{},
+  ForRawCells(polys,
     [&](const auto* offsets, const auto* conn)
     {
       phongvtk::For(0, numPoints, FanWork * polys->GetNumberOfCells(),

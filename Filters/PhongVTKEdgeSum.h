@@ -191,7 +191,7 @@ private:
         out.emplace_back(low - first, 2 * std::max(a, b) + (a < b ? 1 : 0));
       }
     };
-    s.Cells->Visit(RawCells{},
+    ForRawCells(s.Cells,
       [&](const auto* offsets, const auto* conn)
       {
         for (std::size_t b = 0; b < spans.size(); ++b)

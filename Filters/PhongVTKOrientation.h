@@ -217,7 +217,7 @@ inline vtkSmartPointer<vtkCellArray> ReversedPolygons(
   }
   auto out = vtkSmartPointer<vtkCellArray>::New();
   out->DeepCopy(polys);
-  out->Visit(RawCells{},
+  ForOwnRawCells(out,
     [&](const auto* offsets, auto* conn)
     {
       phongvtk::For(0, out->GetNumberOfCells(), out->GetNumberOfCells(),

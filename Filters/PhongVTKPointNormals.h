@@ -325,7 +325,7 @@ struct PointNormalPass
       {
         const vtkIdType begin = static_cast<vtkIdType>(b) * PolyBlock;
         const vtkIdType end = std::min(numPolys, begin + PolyBlock);
-        this->Polys->Visit(RawCells{},
+        ForRawCells(this->Polys,
           [&](const auto* offsets, const auto* conn)
           {
             for (vtkIdType cell = begin; cell < end && first < 0; ++cell)
@@ -417,7 +417,7 @@ struct PointNormalPass
     if (numPolys > 0)
     {
       const std::vector<IdSpan>& spans = this->Spans;
-      polys->Visit(RawCells{},
+      ForRawCells(polys,
         [&](const auto* offsets, const auto* conn)
         {
           for (std::size_t b = 0; b < spans.size(); ++b)
@@ -559,7 +559,7 @@ struct PointNormalPass
   void ScatterStrips(vtkCellArray* strips, const Range& range) const
   {
     const T* pts = this->Points;
-    strips->Visit(RawCells{},
+    ForRawCells(strips,
       [&](const auto* offsets, const auto* conn)
       {
         for (vtkIdType cell = 0; cell < strips->GetNumberOfCells(); ++cell)

@@ -90,7 +90,7 @@ inline std::vector<IdSpan> BlockSpans(vtkCellArray* cells)
   {
     return spans;
   }
-  cells->Visit(RawCells{},
+  ForRawCells(cells,
     [&](const auto* offsets, const auto* conn)
     {
       phongvtk::For(0, numBlocks, numCells,

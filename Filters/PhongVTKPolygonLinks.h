@@ -70,7 +70,7 @@ public:
       std::max<vtkIdType>(1, std::min({ blocks, MaxBlocks, std::max<vtkIdType>(numPolys, 1) }));
     this->Offsets.reset(new Id[static_cast<std::size_t>(numPoints) + 2]);
     this->Links.reset(new Id[static_cast<std::size_t>(this->LinksSize) + 1]);
-    polys->Visit(RawCells{},
+    ForRawCells(polys,
       [&](const auto* offsets, const auto* conn)
       {
         if (blocks == 1)

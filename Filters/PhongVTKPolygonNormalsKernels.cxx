@@ -318,7 +318,7 @@ private:
     }
     AreaVector notSurface;
     notSurface.SetZero(phongvtk::StatusNotSurface);
-    cells->Visit(RawCells{},
+    ForRawCells(cells,
       [&](const auto* offsets, const auto* conn)
       {
         phongvtk::For(0, n, n,
@@ -378,7 +378,7 @@ private:
     {
       return;
     }
-    cells->Visit(RawCells{},
+    ForRawCells(cells,
       [&](const auto* offsets, const auto* conn)
       {
         using Off = std::remove_cv_t<std::remove_pointer_t<decltype(offsets)>>;
@@ -689,7 +689,7 @@ struct SharpEdges
     adjacency.BuildLinks(this->Input);
     vtkCellArray* polys = this->Input->GetPolys();
     vtkIdType disagreeing = 0;
-    polys->Visit(RawCells{},
+    ForRawCells(polys,
       [&](const auto* offsets, const auto* conn)
       {
         adjacency.WithLinksAndNeighbours(
@@ -725,7 +725,7 @@ struct SharpEdges
     }
     vtkCellArray* polys = this->Input->GetPolys();
     const double c = this->Cosine();
-    polys->Visit(RawCells{},
+    ForRawCells(polys,
       [&](const auto* offsets, const auto* conn)
       {
         std::vector<vtkIdType> redo;
@@ -793,7 +793,7 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
   else if (self->GetConsistency() || self->GetAutoOrientNormals())
   {
     adjacency.BuildNeighbours(input);
-    polys->Visit(RawCells{},
+    ForRawCells(polys,
       [&](const auto* offsets, const auto*)
       {
         adjacency.WithLinksAndNeighbours(
@@ -814,7 +814,7 @@ vtkSmartPointer<vtkPolyData> Reoriented(vtkPolygonNormals* self, vtkPolyData* in
   }
   if (self->GetAutoOrientNormals())
   {
-    polys->Visit(RawCells{},
+    ForRawCells(polys,
       [&](const auto* offsets, const auto* conn)
       {
         const phongvtk::AutoOrientReport report =

@@ -322,7 +322,7 @@ void RedoRegions(const std::vector<vtkIdType>& redo, vtkCellArray* polys, Links&
 {
   PointFanOf<LinkId<Links>> fan;
   PointRegionsOf<LinkId<Links>> regions;
-  polys->Visit(RawCells{},
+  ForRawCells(polys,
     [&](const auto* offsets, const auto* conn)
     {
       for (vtkIdType p : redo)
@@ -369,10 +369,10 @@ SplitPolygons ApplyRegions(
   }
   // A corner belongs to exactly one point, so the writes never meet; corners are found in the
   // input's ids.
-  polys->Visit(RawCells{},
+  ForRawCells(polys,
     [&](const auto* offsets, const auto* conn)
     {
-      result.Polys->Visit(RawCells{},
+      ForOwnRawCells(result.Polys,
         [&](const auto* outOffsets, auto* outConn)
         {
           using Id = std::remove_pointer_t<decltype(outConn)>;

@@ -171,14 +171,14 @@ void RunCells(const CellPass<A, T>& pass, vtkPolyData* input)
   const double polyShare = 0.8 * static_cast<double>(numPolys) / total;
   if (numPolys > 0)
   {
-    input->GetPolys()->Visit(RawCells{},
+    ForRawCells(input->GetPolys(),
       [&](const auto* offsets, const auto* conn)
       { pass.Run(offsets, conn, numPolys, firstPoly, false, 0.0, polyShare); });
   }
   const vtkIdType numStrips = input->GetNumberOfStrips();
   if (numStrips > 0)
   {
-    input->GetStrips()->Visit(RawCells{},
+    ForRawCells(input->GetStrips(),
       [&](const auto* offsets, const auto* conn)
       { pass.Run(offsets, conn, numStrips, firstPoly + numPolys, true, polyShare, 0.8); });
   }
@@ -222,7 +222,7 @@ void CheckNonSurfaces(vtkPolyData* input, CellCounts& counts)
     const vtkIdType n = cells ? cells->GetNumberOfCells() : 0;
     if (n > 0)
     {
-      cells->Visit(RawCells{},
+      ForRawCells(cells,
         [&](const auto* offsets, const auto* conn)
         {
           for (vtkIdType cell = 0; cell < n; ++cell)

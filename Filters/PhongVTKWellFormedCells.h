@@ -13,6 +13,7 @@
 #ifndef PhongVTKWellFormedCells_h
 #define PhongVTKWellFormedCells_h
 
+#include "PhongVTKCells.h"
 #include "PhongVTKKernelNamespace.h"
 #include "PhongVTKParallel.h"
 
@@ -98,11 +99,11 @@ inline vtkIdType FirstMalformedCell(vtkCellArray* cells)
     return -1;
   }
   vtkIdType bad = -1;
-  cells->Visit(
-    [&](auto& state)
+  ForRawCells(cells,
+    [&](const auto* offsets, const auto*)
     {
-      bad = FirstMalformedCell(state.GetOffsets()->GetPointer(0), cells->GetNumberOfCells(),
-        state.GetConnectivity()->GetNumberOfValues());
+      bad = FirstMalformedCell(
+        offsets, cells->GetNumberOfCells(), cells->GetConnectivityArray()->GetNumberOfValues());
     });
   return bad;
 }

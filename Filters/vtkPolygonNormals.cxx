@@ -90,7 +90,7 @@ vtkIdType FirstInvalidCell(vtkPolyData* input)
     vtkIdType bad = -1;
     if (n > 0)
     {
-      cells->Visit(phongvtk::RawCells{},
+      phongvtk::ForRawCells(cells,
         [&](const auto* offsets, const auto* conn)
         {
           for (vtkIdType c = 0; c < n && bad < 0; ++c)
@@ -146,13 +146,17 @@ int vtkPolygonNormals::RequestUpdateExtent(vtkInformation* vtkNotUsed(request),
 int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* original = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (!input || !output)
+  if (!original || !output)
   {
     return 0;
   }
-  output->ShallowCopy(input);
+  // Read through plain cell arrays (a copy of VTK 9.6's fixed-size or generic ones: PlainCells);
+  // the output passes the original arrays through.
+  const vtkSmartPointer<vtkPolyData> plain = phongvtk::PlainCells(original);
+  vtkPolyData* input = plain;
+  output->ShallowCopy(original);
   vtkPoints* points = input->GetPoints();
   if (!points || input->GetNumberOfCells() == 0)
   {

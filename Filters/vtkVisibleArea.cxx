@@ -86,16 +86,20 @@ vtkMTimeType vtkVisibleArea::GetMTime()
 int vtkVisibleArea::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* original = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (!input || !output)
+  if (!original || !output)
   {
     return 0;
   }
+  // Read through plain cell arrays (a copy of VTK 9.6's fixed-size or generic ones: PlainCells);
+  // the output passes the original arrays through.
+  const vtkSmartPointer<vtkPolyData> plain = phongvtk::PlainCells(original);
+  vtkPolyData* input = plain;
   this->TotalVisibleArea = 0.0;
   this->MaxVisibleArea = 0.0;
   std::fill_n(this->MaxVisibleAreaDirection, 3, 0.0);
-  output->ShallowCopy(input);
+  output->ShallowCopy(original);
 
   // The view.
   phongvtk::View view;
