@@ -16,7 +16,13 @@ export CFLAGS="$flags" CXXFLAGS="$flags" LDFLAGS="-fsanitize=address,undefined"
 export PHONGVTK_CMAKE_ARGS="-DCMAKE_BUILD_TYPE=Debug -DPHONGVTK_WRAP_PYTHON=OFF
   -DPHONGVTK_BUILD_PLUGIN=OFF -DPHONGVTK_BUILD_BENCHMARKS=OFF"
 "$here/scripts/build.sh"
-export ASAN_OPTIONS="halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:suppressions=$sanitizers/asan.supp${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+# intercept_tls_get_addr=0: GCC 12's runtime (as LLVM's before 17) takes a dynamic TLS block for
+# one with glibc 2.19's header when its address is 16 past a page boundary, which since glibc 2.25
+# happens by chance to a malloc'd block, and LeakSanitizer's tracer then reads a wild range at
+# exit: "Tracer caught signal 11", a test that passed fails (CI, PhongMapper.FlatMatches-
+# PerFaceEvaluation; google/sanitizers#1322). Dynamic TLS is then not scanned for pointers: none
+# of our objects is reachable only from a thread_local of a shared library.
+export ASAN_OPTIONS="intercept_tls_get_addr=0:halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:suppressions=$sanitizers/asan.supp${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export LSAN_OPTIONS="suppressions=$sanitizers/lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$sanitizers/ubsan.supp${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
 if command -v pvbatch >/dev/null; then
