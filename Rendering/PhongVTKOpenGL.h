@@ -1,5 +1,5 @@
-// OpenGL's declarations as the VTK in use loads GL: through GLEW up to VTK 9.2 (vtk_glew.h,
-// module VTK::glew), through glad from 9.3 (vtk_glad.h, VTK::glad). Include it before any other
+// OpenGL's declarations as the VTK in use loads GL: through GLEW up to VTK 9.3 (vtk_glew.h,
+// module VTK::glew), through glad from 9.4 (vtk_glad.h, VTK::glad). Include it before any other
 // OpenGL header. Private to PhongVTK::Rendering.
 #ifndef PhongVTKOpenGL_h
 #define PhongVTKOpenGL_h

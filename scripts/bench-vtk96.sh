@@ -27,15 +27,15 @@ if [ -z "$vtk_dir" ]; then
 fi
 build="$here/build-vtk96"
 if [ ! -f "$build/build.ninja" ]; then
-  cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPHONGVTK_USE_PARAVIEW=OFF \
+  /usr/bin/cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPHONGVTK_USE_PARAVIEW=OFF \
     -DVTK_DIR="$vtk_dir" -DPython3_EXECUTABLE=/usr/bin/python3 >&2
 fi
 # A build folder from before the Rendering module built on VTK 9.6 has it switched off.
-cmake "$build" -DPHONGVTK_BUILD_RENDERING=ON >&2
-cmake --build "$build" -- -j"$(nproc)" >&2
+/usr/bin/cmake "$build" -DPHONGVTK_BUILD_RENDERING=ON >&2
+/usr/bin/cmake --build "$build" -- -j"$(nproc)" >&2
 what="${1:-both}"
 if [ "$what" != bench ]; then
-  ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
+  /usr/bin/ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
 fi
 if [ "$what" != test ]; then
   PHONGVTK_BUILD_DIR="$build" "$here/scripts/bench-normals.sh"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds the fuzz targets of Testing/Fuzz as libFuzzer programs (Clang 14, AddressSanitizer +
+# Builds the fuzz targets of Testing/Fuzz as libFuzzer programs (Debian's Clang, AddressSanitizer +
 # UndefinedBehaviorSanitizer) in build-fuzz/ (PHONGVTK_FUZZ_BUILD_DIR) and runs each for SECONDS
 # (default 60) on one core, starting from the committed seeds and the corpus of earlier runs
 # (build-fuzz/corpus/<target>). Prints each target's last status line; a finding is kept in
@@ -11,6 +11,8 @@
 # Testing/Fuzz/regressions/<target>/ so that every build's CTest replays it.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$here/scripts/common.sh"
+clang="$PHONGVTK_CLANG_VERSION"
 seconds=60
 if [ $# -gt 0 ]; then
   if ! [[ "$1" =~ ^[0-9]+$ ]]; then
@@ -28,7 +30,7 @@ fi
 # The main build (scripts/build.sh, also the set-up): FuzzReaders runs its command line.
 "$here/scripts/build.sh"
 missing=()
-for package in clang-14 libfuzzer-14-dev; do
+for package in "clang-$clang" "libfuzzer-$clang-dev"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
     missing+=("$package")
 done
@@ -42,15 +44,16 @@ fi
 
 build="${PHONGVTK_FUZZ_BUILD_DIR:-$here/build-fuzz}"
 flags="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=all -fno-omit-frame-pointer -g"
+python_version="$("$PHONGVTK_PYTHON" -c 'import sys; print("python%d.%d" % sys.version_info[:2])')"
 if [ ! -f "$build/build.ninja" ]; then
-  CC=clang-14 CXX=clang++-14 CFLAGS="$flags" CXXFLAGS="$flags" \
+  CC="clang-$clang" CXX="clang++-$clang" CFLAGS="$flags" CXXFLAGS="$flags" \
     LDFLAGS="-fsanitize=address,undefined" \
-    cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DPython3_EXECUTABLE=/usr/bin/python3 -DPHONGVTK_FUZZING=ON -DPHONGVTK_BUILD_RENDERING=OFF \
+    "$PHONGVTK_CMAKE" -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DPython3_EXECUTABLE="$PHONGVTK_PYTHON" -DPHONGVTK_FUZZING=ON -DPHONGVTK_BUILD_RENDERING=OFF \
     -DPHONGVTK_BUILD_PLUGIN=OFF -DPHONGVTK_BUILD_BENCHMARKS=OFF \
-    -DPHONGVTK_FUZZ_PYTHONPATH="${PHONGVTK_BUILD_DIR:-$here/build}/lib/python3.11/site-packages"
+    -DPHONGVTK_FUZZ_PYTHONPATH="${PHONGVTK_BUILD_DIR:-$here/build}/lib/$python_version/site-packages"
 fi
-cmake --build "$build" --target "${targets[@]}" -- -j"$(nproc)"
+"$PHONGVTK_CMAKE" --build "$build" --target "${targets[@]}" -- -j"$(nproc)"
 
 # Leaks: the embedded Python keeps its caches, and libFuzzer checks every input that mallocs more
 # than it frees; the other targets are checked.

@@ -16,6 +16,6 @@ args=(-L rendering --output-on-failure)
 if [ $# -gt 0 ]; then
   args+=(-R "$1")
 fi
-PHONGVTK_REGENERATE_BASELINES=1 ctest "${args[@]}"
+PHONGVTK_REGENERATE_BASELINES=1 /usr/bin/ctest "${args[@]}"
 echo "phongvtk: baselines now in Testing/Data/Baseline (review before committing):"
 git -C "$here" status --short -- Testing/Data/Baseline

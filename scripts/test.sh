@@ -6,7 +6,7 @@
 #                                                AddressSanitizer + UndefinedBehaviorSanitizer
 #                                                (build-sanitize/; Testing/Sanitizers/)
 #   scripts/test.sh --clang [CTEST ARGS...]      the Filters module and its C++ tests built with
-#                                                Clang 14 (build-clang/; Testing/Clang/)
+#                                                Debian's Clang (build-clang/; Testing/Clang/)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 if [ "${1:-}" = "--sanitize" ]; then
@@ -17,6 +17,7 @@ if [ "${1:-}" = "--clang" ]; then
   shift
   exec "$here/Testing/Clang/run.sh" "$@"
 fi
+. "$here/scripts/common.sh"
 "$here/scripts/build.sh"
 "$here/scripts/check-format.sh"
 # ParaView's flavour installs every prerequisite of every test: a skip there is a failure.
@@ -25,4 +26,4 @@ if command -v pvbatch >/dev/null; then
 fi
 build="${PHONGVTK_BUILD_DIR:-$here/build}"
 cd "$build"
-ctest --output-on-failure -j"$(nproc)" "$@"
+"$PHONGVTK_CTEST" --output-on-failure -j"$(nproc)" "$@"

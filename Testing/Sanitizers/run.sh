@@ -6,6 +6,7 @@
 # no recovery from UBSan); the suppressions files beside this script name each exception.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+. "$here/scripts/common.sh"
 sanitizers="$here/Testing/Sanitizers"
 export PHONGVTK_BUILD_DIR="${PHONGVTK_SANITIZE_BUILD_DIR:-$here/build-sanitize}"
 # -O1 and assertions on (Debug): what the sanitizers are usually run with; -O2 with them takes
@@ -31,4 +32,4 @@ if command -v pvbatch >/dev/null; then
   export PHONGVTK_NO_SKIPS="${PHONGVTK_NO_SKIPS-1}"
 fi
 cd "$PHONGVTK_BUILD_DIR"
-ctest --output-on-failure -j"$(nproc)" "$@"
+"$PHONGVTK_CTEST" --output-on-failure -j"$(nproc)" "$@"
