@@ -56,6 +56,8 @@ packages=(
   xvfb
   # exact arithmetic (EXACT fallback, test reference), tests, benchmarks
   libgmp-dev libgtest-dev libbenchmark-dev python3-pytest python3-numpy
+  # virtual environments: the format check's clang-format 14 where Debian's is another version
+  python3-venv
   # LLVM's FuzzedDataProvider.h: the fuzz targets' input decoding (Testing/Fuzz)
   "libclang-rt-$clang-dev"
   # the plugin's distributed test (mpiexec pvbatch)
