@@ -282,8 +282,9 @@ TEST(AutoOrient, VTKsContrivedTetrahedronInEveryStartingOrder)
     EXPECT_EQ(FacingBack(out, 0, 4, From(center)), 0) << "reversed faces " << mask;
     EXPECT_GT(ExactSixVolume(out), 0) << "reversed faces " << mask;
   }
-  // What VTK makes of it: inward up to 9.2 (VTK issue 18270), outward since 9.3 (Debian 13's
-  // VTK 9.3.0 and ParaView 5.13's).
+  // What VTK makes of it (VTK issue 18270): inward up to the 9.3.0 release (Debian 13's VTK
+  // included), outward in ParaView 5.13's VTK 9.3.20240617 and later. Development snapshots in
+  // between are not stated.
   vtkNew<vtkPolyDataNormals> vtk;
   vtk->SetInputData(tet);
   vtk->SplittingOff();
@@ -292,10 +293,12 @@ TEST(AutoOrient, VTKsContrivedTetrahedronInEveryStartingOrder)
   vtk->AutoOrientNormalsOn();
   vtk->Update();
   const int vtkBack = FacingBack(vtk->GetOutput(), 0, 4, From(center));
-#if VTK_MAJOR_VERSION == 9 && VTK_MINOR_VERSION < 3
-  EXPECT_EQ(vtkBack, 4) << "VTK 9.2 turns this tetrahedron inward";
-#else
+#if VTK_VERSION_NUMBER <= VTK_VERSION_CHECK(9, 3, 0)
+  EXPECT_EQ(vtkBack, 4) << "VTK up to 9.3.0 turns this tetrahedron inward";
+#elif VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 20240617)
   EXPECT_EQ(vtkBack, 0);
+#else
+  static_cast<void>(vtkBack);
 #endif
 }
 
