@@ -39,6 +39,8 @@ function (_phongvtk_import_renamed targets_file work)
   endforeach ()
 
   file(GLOB config_files "${directory}/${name}-*.cmake")
+  # The copies of an earlier configuration (the package may have changed since) go first.
+  file(REMOVE_RECURSE "${work}/${name}")
   set(renamed 0)
   set(patched_configs)
   foreach (config_file IN LISTS config_files)

@@ -29,7 +29,7 @@ PHONGVTK_BUILD_DIR="$build" "$here/scripts/bench-normals.sh" cxx >benchmark-norm
 say "plots"
 "$build/bin/phongvtk" bench -q --plot-dir . >/dev/null
 
-plugin="$build/lib/paraview-5.11/plugins/PhongVTK/PhongVTK.so"
+plugin="$( (ls "$build"/lib/paraview-*/plugins/PhongVTK/PhongVTK.so 2>/dev/null || true) | head -n 1)"
 if [ -f "$plugin" ] && command -v pvbatch >/dev/null; then
   say "ParaView presets"
   env -u DISPLAY pvbatch "$here/Testing/Plugin/pv_presets.py" "$plugin" "$images/paraview-presets.png" 200 \

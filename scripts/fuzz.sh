@@ -12,6 +12,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 . "$here/scripts/common.sh"
+phongvtk_debian_clang
 clang="$PHONGVTK_CLANG_VERSION"
 seconds=60
 if [ $# -gt 0 ]; then

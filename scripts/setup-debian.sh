@@ -8,6 +8,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 . "$here/scripts/common.sh"
+phongvtk_debian_clang
 clang="$PHONGVTK_CLANG_VERSION"
 
 installed() {

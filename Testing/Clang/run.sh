@@ -6,6 +6,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 . "$here/scripts/common.sh"
+phongvtk_debian_clang
 export PHONGVTK_BUILD_DIR="${PHONGVTK_CLANG_BUILD_DIR:-$here/build-clang}"
 # CMake takes the compilers from CC and CXX at the first configuration.
 export CC="clang-$PHONGVTK_CLANG_VERSION" CXX="clang++-$PHONGVTK_CLANG_VERSION"
