@@ -12,10 +12,31 @@ present under a tagged one, this defines its targets beforehand: it includes a c
 that names the real modules. Nothing is done where the files are right (Debian 12, a fixed
 package, VTK's wheels and source builds).
 
+  phongvtk_package_config_directories(<package> <out-var>)
   phongvtk_import_renamed_python_modules(<package config directory>...)
 
 Call it before the `find_package` of that package, in the directory that calls `find_package`.
 #]==]
+# The folder find_package(<package>) will take: <package>_DIR, or Debian's one folder when nothing
+# points elsewhere (no <package>_ROOT, no CMAKE_PREFIX_PATH); empty otherwise, and then nothing is
+# patched.
+function (phongvtk_package_config_directories package out)
+  set(directories)
+  if (${package}_DIR)
+    set(directories "${${package}_DIR}")
+  elseif (NOT ${package}_ROOT AND NOT DEFINED ENV{${package}_ROOT} AND NOT CMAKE_PREFIX_PATH
+      AND NOT DEFINED ENV{CMAKE_PREFIX_PATH})
+    string(TOLOWER "${package}" lower)
+    file(GLOB directories LIST_DIRECTORIES true
+      "/usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/${lower}-*")
+    list(LENGTH directories count)
+    if (NOT count EQUAL 1)
+      set(directories)
+    endif ()
+  endif ()
+  set(${out} "${directories}" PARENT_SCOPE)
+endfunction ()
+
 function (phongvtk_import_renamed_python_modules)
   set(work "${CMAKE_BINARY_DIR}/CMakeFiles/PhongVTKDebianPythonTargets")
   foreach (directory IN LISTS ARGN)
