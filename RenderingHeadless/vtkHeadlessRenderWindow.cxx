@@ -8,13 +8,11 @@
 
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkOverrideInformation.h"
-#include "vtkOverrideInformationCollection.h"
+#include "vtkObjectFactoryCollection.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
 #include "vtkVersionMacros.h"
-#include "vtkWeakPointer.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -22,7 +20,6 @@
 #include <mutex>
 #include <string>
 #include <unordered_map>
-#include <vector>
 
 namespace
 {
@@ -91,46 +88,6 @@ vtkHeadlessRenderWindow* NewHeadless(Window kind)
   return vtkHeadlessOSMesaRenderWindow::New();
 }
 
-// vtkObjectFactory asks factories in registration order, so an override of vtkRenderWindow
-// registered before this module was loaded (VTK's RenderingOpenGL2 is usually initialised first)
-// would always make the X window. Those overrides are switched off when the module is installed
-// and stand in for "VTK's own window": CreateVTKDefault switches them back on for one call.
-struct DeferredOverride
-{
-  vtkWeakPointer<vtkObjectFactory> Factory;
-  std::string Class; // vtkRenderWindow or vtkRenderWindowInteractor
-  std::string Subclass;
-};
-std::vector<DeferredOverride>& DeferredOverrides()
-{
-  static std::vector<DeferredOverride> deferred;
-  return deferred;
-}
-thread_local bool CreatingVTKDefault = false;
-std::mutex DeferredMutex; // the enable flags are shared by every thread
-
-vtkObject* CreateVTKDefault(const std::string& className)
-{
-  if (CreatingVTKDefault)
-  {
-    return nullptr; // the deferred factory declined: let the later ones answer
-  }
-  std::lock_guard<std::mutex> lock(DeferredMutex);
-  CreatingVTKDefault = true;
-  vtkObject* object = nullptr;
-  for (const DeferredOverride& d : DeferredOverrides())
-  {
-    if (!object && d.Factory && d.Class == className)
-    {
-      d.Factory->SetEnableFlag(1, className.c_str(), d.Subclass.c_str());
-      object = vtkObjectFactory::CreateInstance(className.c_str());
-      d.Factory->SetEnableFlag(0, className.c_str(), d.Subclass.c_str());
-    }
-  }
-  CreatingVTKDefault = false;
-  return object;
-}
-
 /// The environment's choice, its warning said once.
 Window ChosenWindow()
 {
@@ -165,31 +122,25 @@ private:
   void operator=(const vtkHeadlessRenderWindowInteractor&) = delete;
 };
 
+// The overrides decline (nullptr) when the environment chooses VTK's own window: vtkObjectFactory
+// then asks the factories after this one, and VTK's own answer is what the process would have
+// had without PhongVTK.
 vtkObject* CreateInteractor()
 {
-  if (CreatingVTKDefault)
-  {
-    return nullptr;
-  }
   if (ChosenWindow() == Window::VTKDefault)
   {
-    return CreateVTKDefault("vtkRenderWindowInteractor");
+    return nullptr;
   }
   return vtkHeadlessRenderWindowInteractor::New();
 }
 
-// The override of vtkRenderWindow: a headless window when the environment asks for one, else
-// VTK's own (nothing, when no factory before this one made it: the later ones answer).
+// The override of vtkRenderWindow: a headless window when the environment asks for one.
 vtkObject* CreateRenderWindow()
 {
-  if (CreatingVTKDefault)
-  {
-    return nullptr;
-  }
   const Window kind = ChosenWindow();
   if (kind == Window::VTKDefault)
   {
-    return CreateVTKDefault("vtkRenderWindow");
+    return nullptr;
   }
   return NewHeadless(kind);
 }
@@ -235,26 +186,18 @@ void InstallFactory()
   std::call_once(once,
     []
     {
-      vtkObjectFactory::GetRegisteredFactories(); // creates the registry if needed
-      for (const char* className : { "vtkRenderWindow", "vtkRenderWindowInteractor" })
-      {
-        vtkNew<vtkOverrideInformationCollection> overrides;
-        vtkObjectFactory::GetOverrideInformation(className, overrides);
-        vtkCollectionSimpleIterator it;
-        overrides->InitTraversal(it);
-        while (vtkOverrideInformation* info = overrides->GetNextOverrideInformation(it))
-        {
-          vtkObjectFactory* factory = info->GetObjectFactory();
-          const char* subclass = info->GetClassOverrideWithName();
-          if (factory && subclass && factory->GetEnableFlag(className, subclass))
-          {
-            factory->SetEnableFlag(0, className, subclass);
-            DeferredOverrides().push_back({ factory, className, subclass });
-          }
-        }
-      }
+      // vtkObjectFactory asks the registered factories in order and takes the first object, and
+      // RegisterFactory appends: VTK's RenderingOpenGL2 factory, usually registered first,
+      // would always make the X window. This factory is moved to the front of the registry
+      // instead; every other factory keeps its place, its overrides and their enable flags.
       vtkHeadlessRenderWindowFactory* factory = vtkHeadlessRenderWindowFactory::New();
-      vtkObjectFactory::RegisterFactory(factory);
+      vtkObjectFactory::RegisterFactory(factory); // also creates the registry if needed
+      vtkObjectFactoryCollection* registry = vtkObjectFactory::GetRegisteredFactories();
+      if (registry->GetNumberOfItems() > 1)
+      {
+        registry->RemoveItem(factory); // the collection's reference; ours keeps it alive
+        registry->InsertItem(-1, factory);
+      }
       factory->Delete();
       // The registry now holds an object of this library: the library must stay loaded. Plugin
       // loaders dlopen and dlclose libraries freely (ParaView's tries every library in
