@@ -14,18 +14,13 @@ cd "$here"
 clang_format=clang-format
 if [[ "$(clang-format --version 2>/dev/null)" != *"version 14."* ]]; then
   tools="${PHONGVTK_TOOLS_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/phongvtk}/clang-format-14.0.6"
-  # A virtual environment cannot be moved once made: it is made in place and marked complete.
   if [ ! -f "$tools/installed" ]; then
     echo "phongvtk: installing clang-format 14.0.6 from PyPI into $tools" >&2
-    rm -rf "$tools"
-    if ! "$PHONGVTK_PYTHON" -m venv "$tools" ||
-      ! "$tools/bin/pip" install -q --disable-pip-version-check clang-format==14.0.6; then
-      rm -rf "$tools"
-      echo "phongvtk: format NOT checked: clang-format 14 could not be installed from PyPI and" \
-        "Debian's is $(clang-format --version 2>/dev/null | sed 's/.*version //')" >&2
-      exit 0
-    fi
-    touch "$tools/installed"
+  fi
+  if ! phongvtk_pypi_venv "$tools" "" "clang-format==14.0.6"; then
+    echo "phongvtk: format NOT checked: clang-format 14 could not be installed from PyPI and" \
+      "Debian's is $(clang-format --version 2>/dev/null | sed 's/.*version //')" >&2
+    exit 0
   fi
   clang_format="$tools/bin/clang-format"
 fi

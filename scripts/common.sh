@@ -22,3 +22,27 @@ phongvtk_debian_clang() {
       ;;
   esac
 }
+
+# phongvtk_pypi_venv DIR "VENV OPTIONS" "PIP ARGUMENTS" ["PIP ARGUMENTS" ...]
+# Makes the virtual environment DIR of Debian's Python once, with each pip install in turn (each
+# string word-split), and marks it complete (DIR/installed): a venv cannot be moved, so it is made
+# in place. Returns 1, having removed DIR, when PyPI cannot serve the packages.
+phongvtk_pypi_venv() {
+  local dir=$1 options=$2 step
+  shift 2
+  [ -f "$dir/installed" ] && return 0
+  rm -rf "$dir"
+  # shellcheck disable=SC2086 # options and each step are word lists
+  if "$PHONGVTK_PYTHON" -m venv $options "$dir" >/dev/null; then
+    for step in "$@"; do
+      if ! "$dir/bin/pip" install -q --disable-pip-version-check $step; then
+        rm -rf "$dir"
+        return 1
+      fi
+    done
+    touch "$dir/installed"
+    return 0
+  fi
+  rm -rf "$dir"
+  return 1
+}

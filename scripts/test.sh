@@ -25,5 +25,14 @@ if command -v pvbatch >/dev/null; then
   export PHONGVTK_NO_SKIPS="${PHONGVTK_NO_SKIPS-1}"
 fi
 build="${PHONGVTK_BUILD_DIR:-$here/build}"
+# The PyVista accessor's test (Python.PyVista) runs in a virtual environment of Debian's Python
+# that sees Debian's VTK or ParaView (system site packages) and has PyVista from PyPI. CMake asks
+# for it, with the pip steps, where the VTK is one PyVista supports (Testing/Python).
+if [ -f "$build/pyvista-venv.wanted" ]; then
+  mapfile -t steps <"$build/pyvista-venv.wanted"
+  if ! phongvtk_pypi_venv "$build/pyvista-venv" --system-site-packages "${steps[@]}"; then
+    echo "phongvtk: the PyVista accessor is NOT tested: PyVista could not be installed from PyPI" >&2
+  fi
+fi
 cd "$build"
 "$PHONGVTK_CTEST" --output-on-failure -j"$(nproc)" "$@"
