@@ -164,15 +164,16 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
     {
       vtkErrorMacro("Input has " << input->GetNumberOfCells() << " cells but no points.");
       output->Initialize();
+      return 0; // the update fails
     }
-    return 1;
+    return 1; // nothing to compute: the input passes through
   }
   const vtkIdType malformed = phongvtk::FirstMalformedCell(input);
   if (malformed >= 0)
   {
     vtkErrorMacro("Cell " << malformed << phongvtk::MalformedCellReason);
     output->Initialize();
-    return 1;
+    return 0; // the update fails
   }
 
   const phongvtk::PolygonNormalsKernels& kernels = phongvtk::SelectedPolygonNormalsKernels();
@@ -220,7 +221,7 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
     vtkErrorMacro("Cell " << firstBadCell << " refers to a point id outside [0, "
                           << input->GetNumberOfPoints() << "); the output is empty.");
     output->Initialize();
-    return 1;
+    return 0; // the update fails
   }
   if (this->GetAbortExecute())
   {

@@ -31,7 +31,8 @@
  *   decides the rest.
  * No mode overflows or underflows for finite input; non-finite coordinates flag the cell
  * (status 2, zero normal) and raise one warning with their count. Point ids outside the point
- * range are an error naming the first bad cell, and the output is empty.
+ * range are an error naming the first bad cell: the output is empty and the update fails
+ * (RequestData returns 0), as for a malformed cell array or cells without points.
  *
  * Everything the filter does not compute passes through: points, all cells, every other point,
  * cell and field array. Work is split with vtkSMPTools and the output is bitwise identical for

@@ -139,7 +139,7 @@ int vtkVisibleArea::RequestData(vtkInformation* vtkNotUsed(request),
                          << ", " << v[1] << ", " << v[2]
                          << ") is not a finite non-zero vector; the output is empty.");
     output->Initialize();
-    return 1;
+    return 0; // the update fails
   }
 
   const vtkIdType numCells = input->GetNumberOfCells();
@@ -148,14 +148,14 @@ int vtkVisibleArea::RequestData(vtkInformation* vtkNotUsed(request),
   {
     vtkErrorMacro("Input has " << numCells << " cells but no points.");
     output->Initialize();
-    return 1;
+    return 0; // the update fails
   }
   const vtkIdType malformed = phongvtk::FirstMalformedCell(input);
   if (malformed >= 0)
   {
     vtkErrorMacro("Cell " << malformed << phongvtk::MalformedCellReason);
     output->Initialize();
-    return 1;
+    return 0; // the update fails
   }
 
   // The input's area vectors, as doubles.
@@ -191,7 +191,7 @@ int vtkVisibleArea::RequestData(vtkInformation* vtkNotUsed(request),
     vtkErrorMacro("Cell " << firstBadCell << " refers to a point id outside [0, "
                           << input->GetNumberOfPoints() << "); the output is empty.");
     output->Initialize();
-    return 1;
+    return 0; // the update fails
   }
   if (this->GetAbortExecute())
   {

@@ -12,6 +12,7 @@
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkExecutive.h"
 #include "vtkIdList.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -228,18 +229,31 @@ class MessageObserver : public vtkCommand
 {
 public:
   static MessageObserver* New() { return new MessageObserver; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
+  void Execute(vtkObject* caller, unsigned long event, void* data) override
   {
     const std::string text = data ? static_cast<const char*>(data) : "";
+    if (vtkExecutive::SafeDownCast(caller))
+    {
+      this->PipelineErrors.push_back(text);
+      return;
+    }
     (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings).push_back(text);
   }
+  /// The object's errors and warnings and, for an algorithm, its executive's errors.
   void Watch(vtkObject* object)
   {
     object->AddObserver(vtkCommand::ErrorEvent, this);
     object->AddObserver(vtkCommand::WarningEvent, this);
+    if (auto* algorithm = vtkAlgorithm::SafeDownCast(object))
+    {
+      algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this);
+    }
   }
   std::vector<std::string> Errors;
   std::vector<std::string> Warnings;
+  /// What the executive of a watched algorithm reported: an update that failed (RequestData
+  /// returned 0) says so here ("... returned failure for request ...").
+  std::vector<std::string> PipelineErrors;
 };
 
 /// The filter with `configure`, its warnings and errors collected.

@@ -12,6 +12,7 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
@@ -1426,6 +1427,7 @@ struct BadRun
 {
   vtkSmartPointer<vtkPolyData> Output;
   std::vector<std::string> Errors, Warnings;
+  bool Updated = false; // what the executive's Update() returned
 };
 
 BadRun RunWatched(vtkPolyData* input, const std::function<void(vtkPolygonNormals*)>& configure)
@@ -1435,8 +1437,8 @@ BadRun RunWatched(vtkPolyData* input, const std::function<void(vtkPolygonNormals
   messages->Watch(f);
   configure(f);
   f->SetInputData(input);
-  f->Update();
   BadRun run;
+  run.Updated = f->GetExecutive()->Update() != 0;
   run.Output = vtkSmartPointer<vtkPolyData>::New();
   run.Output->ShallowCopy(f->GetOutput());
   run.Errors = messages->Errors;
@@ -1460,6 +1462,7 @@ void ExpectRejected(vtkPolyData* input, vtkIdType firstBadCell, const std::strin
     const std::string message = Lower(run.Errors[0]);
     EXPECT_NE(message.find("cell " + std::to_string(firstBadCell) + " "), std::string::npos)
       << what << ": the error should name cell " << firstBadCell << ": " << run.Errors[0];
+    EXPECT_FALSE(run.Updated) << what << ": the update should fail";
     EXPECT_EQ(run.Output->GetNumberOfPoints(), 0) << what;
     EXPECT_EQ(run.Output->GetNumberOfCells(), 0) << what;
     EXPECT_EQ(run.Output->GetCellData()->GetNumberOfArrays(), 0) << what;

@@ -12,6 +12,7 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkIntArray.h"
@@ -189,6 +190,7 @@ struct FilterRun
   double MaxArea = 0.0;
   std::array<double, 3> MaxDirection = { { 0.0, 0.0, 0.0 } };
   std::vector<std::string> Errors, Warnings;
+  bool Updated = false; // what the executive's Update() returned
 
   double Area(vtkIdType cell) const
   {
@@ -206,8 +208,8 @@ FilterRun RunFilter(vtkPolyData* input, int mode, const Point& direction,
   filter->SetViewDirection(direction[0], direction[1], direction[2]);
   filter->SetCamera(camera);
   filter->SetInputData(input);
-  filter->Update();
   FilterRun r;
+  r.Updated = filter->GetExecutive()->Update() != 0;
   r.Output = vtkSmartPointer<vtkPolyData>::New();
   r.Output->ShallowCopy(filter->GetOutput());
   r.Total = filter->GetTotalVisibleArea();
@@ -218,6 +220,7 @@ FilterRun RunFilter(vtkPolyData* input, int mode, const Point& direction,
   if (expectQuiet)
   {
     EXPECT_TRUE(r.Errors.empty()) << r.Errors.front();
+    EXPECT_TRUE(r.Updated);
   }
   return r;
 }
@@ -1013,6 +1016,7 @@ TEST(VisibleAreaBadInput, ZeroOrNonFiniteViewIsAnError)
     FilterRun run = RunFilter(Cube(), vtkVisibleArea::DOUBLE, v, nullptr, false);
     ASSERT_EQ(run.Errors.size(), 1u);
     EXPECT_NE(run.Errors[0].find("view direction"), std::string::npos) << run.Errors[0];
+    EXPECT_FALSE(run.Updated);
     EXPECT_EQ(run.Output->GetNumberOfCells(), 0);
   }
 }
@@ -1026,6 +1030,7 @@ TEST(VisibleAreaBadInput, BadPointIdNamesTheCell)
   FilterRun run = RunFilter(mesh, vtkVisibleArea::EXACT, { { 0, 0, 1 } }, nullptr, false);
   ASSERT_EQ(run.Errors.size(), 1u);
   EXPECT_NE(run.Errors[0].find("Cell 1"), std::string::npos) << run.Errors[0];
+  EXPECT_FALSE(run.Updated);
   EXPECT_EQ(run.Output->GetNumberOfCells(), 0);
 }
 
