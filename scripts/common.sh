@@ -24,13 +24,15 @@ phongvtk_debian_clang() {
 }
 
 # phongvtk_pypi_venv DIR "VENV OPTIONS" "PIP ARGUMENTS" ["PIP ARGUMENTS" ...]
-# Makes the virtual environment DIR of Debian's Python once, with each pip install in turn (each
-# string word-split), and marks it complete (DIR/installed): a venv cannot be moved, so it is made
-# in place. Returns 1, having removed DIR, when PyPI cannot serve the packages.
+# Makes the virtual environment DIR of Debian's Python with each pip install in turn (each string
+# word-split), once for these arguments: DIR/installed records them, and other arguments make it
+# anew (a venv cannot be moved, so it is made in place). Returns 1, having removed DIR, when
+# PyPI cannot serve the packages.
 phongvtk_pypi_venv() {
-  local dir=$1 options=$2 step
+  local dir=$1 options=$2 step wanted
   shift 2
-  [ -f "$dir/installed" ] && return 0
+  wanted="$(printf '%s\n' "$options" "$@")"
+  [ -f "$dir/installed" ] && [ "$(cat "$dir/installed")" = "$wanted" ] && return 0
   rm -rf "$dir"
   # shellcheck disable=SC2086 # options and each step are word lists
   if "$PHONGVTK_PYTHON" -m venv $options "$dir" >/dev/null; then
@@ -40,7 +42,7 @@ phongvtk_pypi_venv() {
         return 1
       fi
     done
-    touch "$dir/installed"
+    printf '%s\n' "$wanted" >"$dir/installed"
     return 0
   fi
   rm -rf "$dir"

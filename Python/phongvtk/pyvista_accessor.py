@@ -45,9 +45,11 @@ def _choice(name, value, choices):
     return choices[key]
 
 
-def _run(algorithm, progress_bar, message):
-    """Updates `algorithm`; raises RuntimeError with VTK's own words when it reports an error
-    (VTK's output window stays quiet about it: the exception says it)."""
+def _run(algorithm, progress_bar, message, mesh):
+    """Updates `algorithm` on `mesh` and returns its output wrapped, with the PyVista metadata
+    of `mesh` (the types of its bool and complex arrays...) as PyVista's own filters keep it;
+    raises RuntimeError with VTK's own words when it reports an error (VTK's output window
+    stays quiet about it: the exception says it)."""
     errors = []
 
     @calldata_type(VTK_STRING)
@@ -78,7 +80,9 @@ def _run(algorithm, progress_bar, message):
             bar.close()
     if errors:
         raise RuntimeError(f"{algorithm.GetClassName()}: {errors[0]}")
-    return pyvista.wrap(algorithm.GetOutput())
+    output = pyvista.wrap(algorithm.GetOutput())
+    output.copy_meta_from(mesh, deep=True)
+    return output
 
 
 @pyvista.register_dataset_accessor("phong", pyvista.PolyData)
@@ -87,6 +91,13 @@ class PhongAccessor:
 
     def __init__(self, mesh):
         self._mesh = mesh
+
+    def _target(self):
+        """The mesh, with this accessor taken out of its cache: PyVista keeps the accessor in the
+        mesh's __dict__, and a VTK object's __dict__ is not searched for reference cycles (VTK
+        9.2's wrapping), so a mesh and its accessor holding each other would never be freed."""
+        self._mesh.__dict__.pop("phong", None)
+        return self._mesh
 
     def compute_normals(self, cell_normals=True, point_normals=True, split_vertices=False,
                         flip_normals=False, consistent_normals=True, auto_orient_normals=False,
@@ -99,7 +110,9 @@ class PhongAccessor:
         accuracy : str, default "double"
             "fast", "double", "compensated" or "exact" (every component faithful).
         weighting : str, default "area"
-            Weighting of the faces around a point: "area", "angle", "uniform" (VTK's) or "max".
+            Weighting of the faces around a point: "area" (each face by its area: the summed
+            cross-product rule over the point's star), "angle", "uniform" (the plain sum of unit
+            face normals, what VTK's filter and so PyVista's compute_normals do) or "max".
 
         Returns a new :class:`pyvista.PolyData` (the mesh itself with ``inplace=True``) with the
         ``Normals`` arrays asked for, active. With ``split_vertices`` the points along edges
@@ -110,7 +123,7 @@ class PhongAccessor:
         strips, ValueError for an unknown accuracy or weighting, RuntimeError when the filter
         fails (an invalid point id, with the cell it is in).
         """
-        mesh = self._mesh
+        mesh = self._target()
         if mesh.n_verts + mesh.n_lines == mesh.n_cells:
             raise TypeError(
                 "Normals cannot be computed for PolyData containing only vertex cells (e.g. "
@@ -128,9 +141,13 @@ class PhongAccessor:
         normals.SetAutoOrientNormals(bool(auto_orient_normals))
         normals.SetNonManifoldTraversal(bool(non_manifold_traversal))
         normals.SetInputData(mesh)
-        output = _run(normals, progress_bar, "Computing Normals")
-        if split_vertices and "OriginalPointIds" in output.point_data:
-            output.point_data["pyvistaOriginalPointIds"] = output.point_data["OriginalPointIds"]
+        output = _run(normals, progress_bar, "Computing Normals", mesh)
+        if split_vertices:
+            # As PyVista names it; without point normals nothing is split: each point is its own.
+            split = point_normals and "OriginalPointIds" in output.point_data
+            output.point_data["pyvistaOriginalPointIds"] = (
+                np.array(output.point_data["OriginalPointIds"]) if split
+                else np.arange(output.n_points, dtype=pyvista.ID_TYPE))
         if point_normals:
             output.GetPointData().SetActiveNormals("Normals")
         if cell_normals:
@@ -165,8 +182,9 @@ class PhongAccessor:
         area.SetViewDirection(*direction)
         if camera is not None:
             area.SetCamera(camera)
-        area.SetInputData(self._mesh)
-        return _run(area, progress_bar, "Computing Visible Area")
+        mesh = self._target()
+        area.SetInputData(mesh)
+        return _run(area, progress_bar, "Computing Visible Area", mesh)
 
     def actor(self, shading="phong", preset="plastic", color=None):
         """A vtkActor drawing the mesh through :class:`phongvtk.vtkPhongPolyDataMapper`.
@@ -175,8 +193,8 @@ class PhongAccessor:
             "flat", "gouraud" or "phong" (the mesh's point normals are used as they are: call
             :meth:`compute_normals` first for the normals you want).
         preset : str or None, default "plastic"
-            A material preset of vtkPhongPolyDataMapper ("plastic", "metal", ...), or None to
-            keep VTK's default material.
+            A material preset of vtkPhongPolyDataMapper ("plastic", "metal", "matte"), or None
+            to keep VTK's default material.
         color : color, optional
             The diffuse colour, anything :class:`pyvista.Color` takes.
         """
@@ -184,15 +202,15 @@ class PhongAccessor:
             raise RuntimeError("this PhongVTK was built without its Rendering module")
         interpolation = _choice("shading", shading, SHADINGS)
         mapper = vtkPhongPolyDataMapper()
-        mapper.SetInputData(self._mesh)
+        mapper.SetInputData(self._target())
         mapper.ScalarVisibilityOff()
         actor = vtkActor()
         actor.SetMapper(mapper)
         prop = actor.GetProperty()
-        if preset is not None and not vtkPhongPolyDataMapper.ApplyPreset(prop, str(preset)):
+        if color is not None:  # first: a preset derives its ambient (and metal's specular) colour
+            prop.SetColor(pyvista.Color(color).float_rgb)
+        if preset is not None and not vtkPhongPolyDataMapper.ApplyPreset(prop, str(preset).lower()):
             raise ValueError(f"unknown preset {preset!r}")
-        if color is not None:
-            prop.SetDiffuseColor(pyvista.Color(color).float_rgb)
         prop.SetInterpolation(interpolation)
         return actor
 

@@ -3,12 +3,15 @@
 Truth comes from outside the filter: the geometry of a cube and of a sphere, exact rational
 arithmetic (fractions) for the area vectors, numpy cross products of the output's own cells.
 """
+import gc
+import inspect
 import math
 import os
 import subprocess
 import sys
 from decimal import Decimal, getcontext
 from fractions import Fraction
+import weakref
 
 import numpy as np
 import pytest
@@ -61,17 +64,58 @@ def test_split_cube_has_24_points_with_axis_aligned_normals():
 
 
 def test_defaults_are_pyvistas():
+    ours = inspect.signature(pv.PolyData.phong.compute_normals).parameters
+    theirs = inspect.signature(pv.PolyData.compute_normals).parameters
+    for name, parameter in theirs.items():
+        if name != "self":
+            assert ours[name].default == parameter.default, name
     sphere = pv.Sphere()
-    ours = sphere.phong.compute_normals()
-    theirs = sphere.compute_normals()
-    assert ours.n_points == theirs.n_points and ours.n_cells == theirs.n_cells
-    assert "Normals" in ours.point_data and "Normals" in ours.cell_data
-    assert ours.point_data.active_normals_name == "Normals"
-    assert ours.cell_data.active_normals_name == "Normals"
+    mine = sphere.phong.compute_normals()
+    pyvistas = sphere.compute_normals()
+    assert mine.n_points == pyvistas.n_points and mine.n_cells == pyvistas.n_cells
+    assert mine.point_data.active_normals_name == "Normals"
+    assert mine.cell_data.active_normals_name == "Normals"
     # Both are outward unit normals of a sphere: within the facet angle of the radius direction.
-    radial = ours.points / np.linalg.norm(ours.points, axis=1)[:, None]
-    assert np.all(np.einsum("ij,ij->i", ours.point_data["Normals"], radial) > math.cos(0.1))
-    assert np.allclose(ours.point_data["Normals"], theirs.point_data["Normals"], atol=0.05)
+    radial = mine.points / np.linalg.norm(mine.points, axis=1)[:, None]
+    assert np.all(np.einsum("ij,ij->i", mine.point_data["Normals"], radial) > math.cos(0.1))
+    assert np.allclose(mine.point_data["Normals"], pyvistas.point_data["Normals"], atol=0.05)
+
+
+def reference_point_normals(mesh, weighting):
+    """Each point's normal from its triangles, weighted as documented, in numpy."""
+    sums = np.zeros((mesh.n_points, 3))
+    for ids in cell_point_ids(mesh):
+        p = mesh.points[ids].astype(float)
+        w = np.cross(p[1] - p[0], p[2] - p[0])
+        unit = w / np.linalg.norm(w)
+        for corner in range(3):
+            a, b, c = p[corner], p[(corner + 1) % 3], p[(corner + 2) % 3]
+            e1, e2 = b - a, c - a
+            if weighting == "area":
+                contribution = w
+            elif weighting == "uniform":
+                contribution = unit
+            elif weighting == "angle":
+                cosine = np.dot(e1, e2) / (np.linalg.norm(e1) * np.linalg.norm(e2))
+                contribution = unit * math.acos(max(-1.0, min(1.0, cosine)))
+            else:  # max: the corner's cross product over its edges' squared lengths
+                contribution = np.cross(e1, e2) / (np.dot(e1, e1) * np.dot(e2, e2))
+            sums[ids[corner]] += contribution
+    return sums / np.linalg.norm(sums, axis=1)[:, None]
+
+
+@pytest.mark.parametrize("weighting", ["area", "angle", "uniform", "max"])
+def test_each_weighting_is_the_documented_one(weighting):
+    # A sphere with its points moved at random: the four weightings differ by 0.05 and more.
+    sphere = pv.Sphere(theta_resolution=12, phi_resolution=8).triangulate().clean()
+    sphere.points += np.random.default_rng(3).uniform(-0.03, 0.03, sphere.points.shape)
+    got = sphere.phong.compute_normals(weighting=weighting, cell_normals=False,
+                                       consistent_normals=False).point_data["Normals"]
+    expected = reference_point_normals(sphere, weighting)
+    assert np.max(np.abs(got - expected)) < 1e-6
+    others = [w for w in ("area", "angle", "uniform", "max") if w != weighting]
+    for other in others:
+        assert np.max(np.abs(reference_point_normals(sphere, other) - expected)) > 1e-3
 
 
 def exact_unit_normal(corners):
@@ -149,10 +193,32 @@ def test_weighting_and_accuracy_are_checked():
         cube.phong.compute_normals(accuracy="quad")
     with pytest.raises(ValueError, match="weighting"):
         cube.phong.compute_normals(weighting="mass")
-    for weighting in ("area", "angle", "uniform", "max"):
-        corner = cube.phong.compute_normals(weighting=weighting).point_data["Normals"][0]
-        # A cube's corner: by symmetry every weighting gives the diagonal direction.
-        assert np.allclose(np.abs(corner), 1 / math.sqrt(3), atol=1e-6)
+
+
+def test_a_mesh_used_through_the_accessor_is_freed():
+    mesh = pv.Sphere()
+    mesh.phong.compute_normals()
+    mesh.phong.visible_area()
+    mesh.phong.actor()
+    gone = weakref.ref(mesh)
+    del mesh
+    gc.collect()
+    assert gone() is None
+
+
+def test_pyvista_metadata_follows_the_mesh():
+    cube = pv.Cube()
+    cube.point_data["flag"] = np.arange(cube.n_points) % 2 == 0
+    for out in (cube.phong.compute_normals(), cube.phong.visible_area(),
+                cube.phong.compute_normals(inplace=True)):
+        assert out.point_data["flag"].dtype == bool
+
+
+def test_split_without_point_normals_keeps_every_point():
+    cube = pv.Cube()
+    out = cube.phong.compute_normals(split_vertices=True, point_normals=False)
+    assert out.n_points == 8
+    assert np.array_equal(out.point_data["pyvistaOriginalPointIds"], np.arange(8))
 
 
 def test_meshes_without_polygons_and_bad_point_ids_raise():
@@ -244,6 +310,11 @@ def test_phong_actor_in_a_plotter():
     plotter.close()
     with pytest.raises(ValueError, match="preset"):
         sphere.phong.actor(preset="velvet")
+    # The colour is the material's: the preset's ambient (and metal's specular) colour follow it.
+    metal = sphere.phong.actor(preset="Metal", color="gold").GetProperty()
+    gold = pv.Color("gold").float_rgb
+    assert metal.GetDiffuseColor() == pytest.approx(gold)
+    assert metal.GetSpecularColor() == pytest.approx(gold)
 
 
 def test_entry_point_registers_without_importing_phongvtk():
