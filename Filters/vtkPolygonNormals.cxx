@@ -4,6 +4,7 @@
 #include "PhongVTKCells.h"
 #include "PhongVTKKernels.h"
 #include "PhongVTKOptions.h"
+#include "PhongVTKStripTriangles.h"
 #include "PhongVTKWellFormedCells.h"
 
 #include "vtkCellArray.h"
@@ -11,6 +12,7 @@
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -70,6 +72,16 @@ void vtkPolygonNormals::SetOutputPrecision(int precision)
 {
   if (phongvtk::SetEnumeratedOption(
         this, "output precision", this->OutputPrecision, precision, PrecisionNames))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPolygonNormals::SetOutputPointsPrecision(int precision)
+{
+  if (phongvtk::SetEnumeratedOption(
+        this, "output points precision", this->OutputPointsPrecision, precision, PrecisionNames))
   {
     this->Modified();
   }
@@ -175,6 +187,22 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
     output->Initialize();
     return 0; // the update fails
   }
+  vtkSmartPointer<vtkPolyData> triangulated;
+  if (this->TriangulateStrips && input->GetNumberOfStrips() > 0)
+  {
+    // Checked first, so that an error names the input's cell, not one of a strip's triangles.
+    const vtkIdType invalid = FirstInvalidCell(input);
+    if (invalid >= 0)
+    {
+      vtkErrorMacro("Cell " << invalid << " refers to a point id outside [0, "
+                            << input->GetNumberOfPoints() << "); the output is empty.");
+      output->Initialize();
+      return 0; // the update fails
+    }
+    triangulated = phongvtk::StripsAsTriangles(input);
+    input = triangulated;
+    output->ShallowCopy(triangulated);
+  }
 
   const phongvtk::PolygonNormalsKernels& kernels = phongvtk::SelectedPolygonNormalsKernels();
   vtkIdType nonFinite = 0;
@@ -228,6 +256,17 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
     // Stopped part-way: the output arrays hold unwritten values, so nothing is delivered.
     output->Initialize();
     return 1;
+  }
+  if (split && this->OutputPointsPrecision != DEFAULT_PRECISION)
+  {
+    const int wanted = this->OutputPointsPrecision == SINGLE_PRECISION ? VTK_FLOAT : VTK_DOUBLE;
+    if (output->GetPoints()->GetDataType() != wanted)
+    {
+      vtkNew<vtkPoints> converted;
+      converted->SetDataType(wanted);
+      converted->GetData()->DeepCopy(output->GetPoints()->GetData());
+      output->SetPoints(converted);
+    }
   }
   if (nonOrientable > 0)
   {
@@ -291,4 +330,6 @@ void vtkPolygonNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ComputeOriginalPointIds: " << (this->ComputeOriginalPointIds ? "On" : "Off")
      << "\n";
   os << indent << "OutputPrecision: " << PrecisionNames[this->OutputPrecision] << "\n";
+  os << indent << "TriangulateStrips: " << (this->TriangulateStrips ? "On" : "Off") << "\n";
+  os << indent << "OutputPointsPrecision: " << PrecisionNames[this->OutputPointsPrecision] << "\n";
 }

@@ -5,8 +5,8 @@
  * For every polygon p0 ... p(n-1) vtkPolygonNormals computes the area vector
  * `w = sum_{i=1}^{n-2} (p_i - p0) x (p_(i+1) - p0)`: `|w|` is twice the area and `w/|w|` the unit
  * normal, for any number of vertices, concave, non-planar or self-intersecting polygons alike.
- * A triangle strip's area vector is the sum of its triangles taken with the strip's alternating
- * orientation. Vertices and lines are not surfaces.
+ * Triangle strips are broken into triangles first (TriangulateStrips). Vertices and lines are
+ * not surfaces.
  *
  * Cell outputs: `Normals` (unit normals, set as the active cell normals) and, on request,
  * `AreaVectors` (w/2: its length is the area), `Areas` and `NormalStatus` (0 ok, 1 degenerate:
@@ -40,13 +40,19 @@
  * depend on the order of the cells nor on the partition of the mesh among processes either: it is
  * a function of the set of its faces, their contributions summed exactly and rounded once.
  *
- * In place of vtkPolyDataNormals (all off by default, so that cells and points pass through
- * unchanged): Consistency reorders the polygons so that neighbours agree, AutoOrientNormals turns
- * every component outward by the exact sign of its volume (cavities inward), NonManifoldTraversal
- * joins components across non-manifold edges, FlipNormals reverses every polygon, and Splitting
- * duplicates the points along edges sharper than FeatureAngle (decided exactly in EXACT), with
- * `OriginalPointIds` mapping the copies back. A `Normals` array already on the input is never
- * reused: the normals always follow the (reordered) polygons.
+ * In place of vtkPolyDataNormals, with its options under their names and with its defaults
+ * (ComputePointNormals, Splitting at FeatureAngle 30, Consistency, NonManifoldTraversal and
+ * TriangulateStrips on; ComputeCellNormals, AutoOrientNormals and FlipNormals off;
+ * OutputPointsPrecision): Consistency reorders the polygons so that neighbours agree,
+ * AutoOrientNormals turns every component outward by the exact sign of its volume (cavities
+ * inward), NonManifoldTraversal joins components across non-manifold edges, FlipNormals reverses
+ * every polygon, and Splitting duplicates the points along edges sharper than FeatureAngle
+ * (decided exactly in EXACT), with `OriginalPointIds` mapping the copies back. PhongVTK's own
+ * options come on top: Accuracy, PointWeighting (AREA by default: each face counts by its area,
+ * where vtkPolyDataNormals sums unit face normals, UNIFORM here, so that slivers count as much
+ * as large faces), the area, status and original-id arrays, PieceInvariant, OutputPrecision.
+ * A `Normals` array already on the input is never reused: the normals always follow the
+ * (reordered) polygons.
  *
  * @sa vtkPolyDataNormals vtkTriangleMeshPointNormals vtkPolygon
  */
@@ -111,7 +117,8 @@ public:
 
   ///@{
   /**
-   * Produce the cell array `Normals` (unit normals, the active cell normals). Default is on.
+   * Produce the cell array `Normals` (unit normals, the active cell normals). Default is off,
+   * as in vtkPolyDataNormals.
    */
   vtkSetMacro(ComputeCellNormals, bool);
   vtkGetMacro(ComputeCellNormals, bool);
@@ -120,7 +127,8 @@ public:
 
   ///@{
   /**
-   * Produce the point array `Normals` (the active point normals). Default is off.
+   * Produce the point array `Normals` (the active point normals). Default is on, as in
+   * vtkPolyDataNormals.
    */
   vtkSetMacro(ComputePointNormals, bool);
   vtkGetMacro(ComputePointNormals, bool);
@@ -182,7 +190,7 @@ public:
    * strip) cannot agree everywhere: one warning gives the number of such components, and the
    * polygons along the edges where they still disagree get NormalStatus 4. Strips, lines and
    * vertices are not reordered. Everything computed (normals, areas, splitting) follows the
-   * reordered polygons. Default is off (the cells pass through unchanged).
+   * reordered polygons. Default is on, as in vtkPolyDataNormals.
    */
   vtkSetMacro(Consistency, bool);
   vtkGetMacro(Consistency, bool);
@@ -217,8 +225,8 @@ public:
    * pair that joins two components makes them run along the edge in opposite directions (a pair
    * within one component is passed over: around an edge of three or more polygons there is no
    * right pairing without the geometry). Joined components count as one, with a non-manifold
-   * edge, for AutoOrientNormals (an open component). Default is off (vtkPolyDataNormals: on), so
-   * that components touching at a non-manifold edge (two cubes sharing an edge) are oriented
+   * edge, for AutoOrientNormals (an open component). Default is on, as in vtkPolyDataNormals;
+   * off, components touching at a non-manifold edge (two cubes sharing an edge) are oriented
    * each on its own.
    */
   vtkSetMacro(NonManifoldTraversal, bool);
@@ -245,8 +253,8 @@ public:
    * copied, and its polygons refer to the copy. Boundary and non-manifold edges (three or more
    * polygons) separate regions; a polygon without a direction (zero area, non-finite) joins none
    * and keeps the point. Only polygons are split; strips, lines and vertices keep their ids.
-   * Takes effect with ComputePointNormals only (nothing else depends on it). Default is off, so
-   * that the points pass through unchanged unless asked.
+   * Takes effect with ComputePointNormals only (nothing else depends on it). Default is on, as
+   * in vtkPolyDataNormals.
    */
   vtkSetMacro(Splitting, bool);
   vtkGetMacro(Splitting, bool);
@@ -278,6 +286,29 @@ public:
 
   ///@{
   /**
+   * Break triangle strips into triangles before anything else, as vtkPolyDataNormals does: each
+   * triangle becomes a polygon of its own (after the input's polygons, with its strip's cell
+   * data) and gets its own normal. Default is on. Off, each strip stays one cell whose area
+   * vector is the sum of its triangles' (taken with the strip's alternating orientation).
+   */
+  vtkSetMacro(TriangulateStrips, bool);
+  vtkGetMacro(TriangulateStrips, bool);
+  vtkBooleanMacro(TriangulateStrips, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Precision of the output points when Splitting makes new ones (with ComputePointNormals),
+   * as in vtkPolyDataNormals: vtkAlgorithm::DEFAULT_PRECISION (default: that of the input
+   * points), SINGLE_PRECISION or DOUBLE_PRECISION. Without splitting the input's points pass
+   * through. Another value is an error and leaves the precision unchanged.
+   */
+  virtual void SetOutputPointsPrecision(int precision);
+  vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
+  ///@{
+  /**
    * Precision of the output arrays: vtkAlgorithm::SINGLE_PRECISION (default, VTK's convention
    * for normals), DOUBLE_PRECISION, or DEFAULT_PRECISION (that of the input points). Another
    * value is an error and leaves the precision unchanged.
@@ -297,20 +328,22 @@ protected:
 
   int Accuracy = DOUBLE;
   int PointWeighting = AREA;
-  bool ComputeCellNormals = true;
-  bool ComputePointNormals = false;
+  bool ComputeCellNormals = false;
+  bool ComputePointNormals = true;
   bool ComputeAreaVectors = false;
   bool ComputeAreas = false;
   bool ComputeNormalStatus = false;
   bool PieceInvariant = true;
-  bool Consistency = false;
+  bool Consistency = true;
   bool AutoOrientNormals = false;
-  bool NonManifoldTraversal = false;
+  bool NonManifoldTraversal = true;
   bool FlipNormals = false;
-  bool Splitting = false;
+  bool Splitting = true;
   double FeatureAngle = 30.0;
   bool ComputeOriginalPointIds = true;
   int OutputPrecision = SINGLE_PRECISION;
+  bool TriangulateStrips = true;
+  int OutputPointsPrecision = DEFAULT_PRECISION;
 
 private:
   vtkPolygonNormals(const vtkPolygonNormals&) = delete;

@@ -232,6 +232,9 @@ def normals_by_mode(mesh):
         normals = phongvtk.vtkPolygonNormals()
         normals.SetInputData(mesh)
         normals.SetAccuracy(index)
+        normals.SetComputeCellNormals(True)
+        normals.SetComputePointNormals(False)
+        normals.SetConsistency(False)  # the polygons as given: the area vectors alone are timed
         normals.SetOutputPrecision(
             vtkAlgorithm.SINGLE_PRECISION if mode == "FAST" else vtkAlgorithm.DOUBLE_PRECISION
         )

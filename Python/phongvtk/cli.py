@@ -331,8 +331,8 @@ def run_normals(args, progress):
     normals.SetComputeNormalStatus(args.status)
     normals.SetOutputPrecision(PRECISIONS[args.precision])
     feature_angle = feature_angle_of(args)
+    normals.SetSplitting(feature_angle is not None)
     if feature_angle is not None:
-        normals.SplittingOn()
         normals.SetFeatureAngle(feature_angle)
     orient(normals, args)
     progress.run(normals, "normals", f"cannot compute the normals of '{args.mesh}'")

@@ -201,10 +201,14 @@ def normals_filter(mesh, shading, accuracy="double", weighting="area", feature_a
     smooth = shading != "flat"
     normals.SetComputeCellNormals(not smooth)
     normals.SetComputePointNormals(smooth)
+    normals.SetSplitting(feature_angle is not None)
     if feature_angle is not None:
-        normals.SplittingOn()
         normals.SetFeatureAngle(feature_angle)
-    for name, value in (orientation or {}).items():
+    # The polygons as given unless `orientation` says otherwise (the filter's defaults are
+    # vtkPolyDataNormals': Consistency and NonManifoldTraversal on).
+    given = {"Consistency": False, "AutoOrientNormals": False, "NonManifoldTraversal": False,
+             "FlipNormals": False}
+    for name, value in {**given, **(orientation or {})}.items():
         getattr(normals, f"Set{name}")(value)
     return normals
 

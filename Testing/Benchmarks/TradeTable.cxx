@@ -226,6 +226,9 @@ int main(int argc, char** argv)
       auto filter = vtkSmartPointer<vtkPolygonNormals>::New();
       filter->SetInputData(input.Mesh);
       filter->SetAccuracy(mode);
+      filter->SetComputeCellNormals(true); // the cell normals of the polygons as given
+      filter->SetComputePointNormals(false);
+      filter->SetConsistency(false);
       filter->SetOutputPrecision(mode == vtkPolygonNormals::FAST ? vtkAlgorithm::SINGLE_PRECISION
                                                                  : vtkAlgorithm::DOUBLE_PRECISION);
       filters.push_back(filter);

@@ -256,13 +256,29 @@ public:
   std::vector<std::string> PipelineErrors;
 };
 
-/// The filter with `configure`, its warnings and errors collected.
+/// The options that compute the cell normals of the cells as given and nothing else: cell normals
+/// on; point normals, splitting, consistency, non-manifold traversal, strip triangulation off.
+/// The tests of one stage start from here and turn on what they test; the defaults themselves
+/// (vtkPolyDataNormals') are tested against vtkPolyDataNormals.
+inline void CellNormalsOfTheCellsAsGiven(vtkPolygonNormals* filter)
+{
+  filter->ComputeCellNormalsOn();
+  filter->ComputePointNormalsOff();
+  filter->SplittingOff();
+  filter->ConsistencyOff();
+  filter->NonManifoldTraversalOff();
+  filter->TriangulateStripsOff();
+}
+
+/// The filter with CellNormalsOfTheCellsAsGiven, then `configure`, its warnings and errors
+/// collected.
 inline vtkSmartPointer<vtkPolyData> RunFilter(vtkPolyData* input,
   const std::function<void(vtkPolygonNormals*)>& configure, MessageObserver* messages = nullptr)
 {
   vtkNew<vtkPolygonNormals> filter;
   vtkNew<MessageObserver> own;
   (messages ? messages : own.GetPointer())->Watch(filter);
+  CellNormalsOfTheCellsAsGiven(filter);
   configure(filter);
   filter->SetInputData(input);
   filter->Update();

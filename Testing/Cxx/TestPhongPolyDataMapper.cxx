@@ -701,6 +701,8 @@ vtkSmartPointer<vtkPolyData> UnitMesh(const char* name,
   normals->SetInputData(mesh);
   normals->ComputeCellNormalsOn();
   normals->ComputePointNormalsOn();
+  normals->SplittingOff(); // smooth across every edge, the polygons as given, unless configured
+  normals->ConsistencyOff();
   if (configure)
   {
     configure(normals);

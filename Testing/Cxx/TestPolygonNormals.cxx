@@ -136,6 +136,7 @@ vtkSmartPointer<vtkPolyData> RunFilter(
   vtkPolyData* input, const std::function<void(vtkPolygonNormals*)>& configure = {})
 {
   vtkNew<vtkPolygonNormals> filter;
+  phongvtk_test::CellNormalsOfTheCellsAsGiven(filter);
   vtkNew<MessageObserver> messages;
   messages->Watch(filter);
   if (configure)
@@ -561,8 +562,14 @@ TEST(PolygonNormalsApi, Defaults)
   vtkNew<vtkPolygonNormals> f;
   EXPECT_EQ(f->GetAccuracy(), vtkPolygonNormals::DOUBLE);
   EXPECT_EQ(f->GetPointWeighting(), vtkPolygonNormals::AREA);
-  EXPECT_TRUE(f->GetComputeCellNormals());
-  EXPECT_FALSE(f->GetComputePointNormals());
+  // vtkPolyDataNormals' options and defaults: TestDropIn compares them with that class.
+  EXPECT_FALSE(f->GetComputeCellNormals());
+  EXPECT_TRUE(f->GetComputePointNormals());
+  EXPECT_TRUE(f->GetSplitting());
+  EXPECT_TRUE(f->GetConsistency());
+  EXPECT_TRUE(f->GetNonManifoldTraversal());
+  EXPECT_TRUE(f->GetTriangulateStrips());
+  EXPECT_EQ(f->GetOutputPointsPrecision(), vtkAlgorithm::DEFAULT_PRECISION);
   EXPECT_FALSE(f->GetComputeAreaVectors());
   EXPECT_FALSE(f->GetComputeAreas());
   EXPECT_FALSE(f->GetComputeNormalStatus());
@@ -585,6 +592,7 @@ TEST(PolygonNormalsApi, ConstantsAreNumberedFastestFirst)
 TEST(PolygonNormalsApi, AccuracySettersAndNames)
 {
   vtkNew<vtkPolygonNormals> f;
+  phongvtk_test::CellNormalsOfTheCellsAsGiven(f);
   f->SetAccuracyToFast();
   EXPECT_EQ(f->GetAccuracy(), vtkPolygonNormals::FAST);
   EXPECT_STREQ(f->GetAccuracyAsString(), "FAST");
@@ -602,6 +610,7 @@ TEST(PolygonNormalsApi, AccuracySettersAndNames)
 TEST(PolygonNormalsApi, PointWeightingSettersAndNames)
 {
   vtkNew<vtkPolygonNormals> f;
+  phongvtk_test::CellNormalsOfTheCellsAsGiven(f);
   f->SetPointWeightingToAngle();
   EXPECT_EQ(f->GetPointWeighting(), vtkPolygonNormals::ANGLE);
   EXPECT_STREQ(f->GetPointWeightingAsString(), "ANGLE");
@@ -619,6 +628,7 @@ TEST(PolygonNormalsApi, PointWeightingSettersAndNames)
 TEST(PolygonNormalsApi, UnknownOptionValuesAreErrorsAndChangeNothing)
 {
   vtkNew<vtkPolygonNormals> f;
+  phongvtk_test::CellNormalsOfTheCellsAsGiven(f);
   vtkNew<phongvtk_test::MessageObserver> messages;
   messages->Watch(f);
   f->SetAccuracyToCompensated();
@@ -647,6 +657,7 @@ TEST(PolygonNormalsApi, UnknownOptionValuesAreErrorsAndChangeNothing)
 TEST(PolygonNormalsApi, BooleanMacrosSwitchEachOutput)
 {
   vtkNew<vtkPolygonNormals> f;
+  phongvtk_test::CellNormalsOfTheCellsAsGiven(f);
   f->ComputeCellNormalsOff();
   f->ComputePointNormalsOn();
   f->ComputeAreaVectorsOn();
@@ -662,6 +673,7 @@ TEST(PolygonNormalsApi, BooleanMacrosSwitchEachOutput)
 TEST(PolygonNormalsApi, SettersMarkTheFilterModified)
 {
   vtkNew<vtkPolygonNormals> f;
+  phongvtk_test::CellNormalsOfTheCellsAsGiven(f);
   vtkMTimeType t = f->GetMTime();
   f->SetAccuracyToExact();
   EXPECT_GT(f->GetMTime(), t);
@@ -673,16 +685,21 @@ TEST(PolygonNormalsApi, SettersMarkTheFilterModified)
 TEST(PolygonNormalsApi, PrintSelfMentionsEveryMember)
 {
   vtkNew<vtkPolygonNormals> f;
+  phongvtk_test::CellNormalsOfTheCellsAsGiven(f);
   f->SetAccuracyToExact();
   f->SetPointWeightingToMax();
   f->ComputeAreasOn();
+  f->AutoOrientNormalsOn();
+  f->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
   std::ostringstream os;
   f->PrintSelf(os, vtkIndent());
   const std::string text = os.str();
   for (const char* member : { "Accuracy: EXACT", "PointWeighting: MAX", "ComputeCellNormals: On",
          "ComputePointNormals: Off", "ComputeAreaVectors: Off", "ComputeAreas: On",
-         "ComputeNormalStatus: Off", "PieceInvariant: On", "Splitting: Off", "FeatureAngle: 30",
-         "ComputeOriginalPointIds: On", "OutputPrecision" })
+         "ComputeNormalStatus: Off", "PieceInvariant: On", "Consistency: Off",
+         "AutoOrientNormals: On", "NonManifoldTraversal: Off", "FlipNormals: Off", "Splitting: Off",
+         "FeatureAngle: 30", "ComputeOriginalPointIds: On", "OutputPrecision: SINGLE_PRECISION",
+         "TriangulateStrips: Off", "OutputPointsPrecision: DOUBLE_PRECISION" })
   {
     EXPECT_NE(text.find(member), std::string::npos) << "PrintSelf lacks '" << member << "'";
   }
@@ -843,6 +860,7 @@ TEST(PolygonNormalsOutputs, EmptyInputGivesEmptyOutputQuietly)
 {
   vtkNew<vtkPolyData> empty;
   vtkNew<vtkPolygonNormals> f;
+  phongvtk_test::CellNormalsOfTheCellsAsGiven(f);
   vtkNew<MessageObserver> messages;
   messages->Watch(f);
   f->SetInputData(empty);
@@ -1433,6 +1451,7 @@ struct BadRun
 BadRun RunWatched(vtkPolyData* input, const std::function<void(vtkPolygonNormals*)>& configure)
 {
   vtkNew<vtkPolygonNormals> f;
+  phongvtk_test::CellNormalsOfTheCellsAsGiven(f);
   vtkNew<MessageObserver> messages;
   messages->Watch(f);
   configure(f);
@@ -2225,6 +2244,7 @@ TEST(PolygonNormalsProgress, ReachesOneMonotonically)
   for (int pass : { 0, 1, 2 })
   {
     vtkNew<vtkPolygonNormals> f;
+    phongvtk_test::CellNormalsOfTheCellsAsGiven(f);
     vtkNew<ProgressRecorder> progress;
     f->AddObserver(vtkCommand::ProgressEvent, progress);
     f->SetComputePointNormals(pass > 0);
@@ -2247,6 +2267,7 @@ TEST(PolygonNormalsProgress, AbortFromAProgressObserverStopsEarly)
   for (int pass : { 0, 1, 2 })
   {
     vtkNew<vtkPolygonNormals> f;
+    phongvtk_test::CellNormalsOfTheCellsAsGiven(f);
     vtkNew<ProgressRecorder> progress;
     progress->AbortAbove = 0.0;
     f->AddObserver(vtkCommand::ProgressEvent, progress);

@@ -67,11 +67,13 @@ vtkSmartPointer<vtkPolyData> Split(vtkPolyData* input, int mode = vtkPolygonNorm
   double angle = 30.0, const std::function<void(vtkPolygonNormals*)>& configure = {})
 {
   vtkNew<vtkPolygonNormals> filter;
+  phongvtk_test::CellNormalsOfTheCellsAsGiven(filter);
   vtkNew<MessageObserver> messages;
   messages->Watch(filter);
   filter->SetAccuracy(mode);
   filter->ComputePointNormalsOn();
   filter->SplittingOn();
+  filter->ConsistencyOff(); // the polygons as given: splitting alone
   filter->SetFeatureAngle(angle);
   if (configure)
   {
@@ -829,13 +831,17 @@ TEST(Splitting, CubeGetsThreeCopiesOfEveryCornerAndAxisAlignedNormals)
   }
 }
 
-TEST(Splitting, OffByDefaultAndOnlyWithPointNormals)
+TEST(Splitting, OnByDefaultAndOnlyWithPointNormals)
 {
   auto cube = Cube();
   vtkNew<vtkPolygonNormals> f;
-  EXPECT_FALSE(f->GetSplitting());
+  EXPECT_TRUE(f->GetSplitting()); // vtkPolyDataNormals' default
   EXPECT_EQ(f->GetFeatureAngle(), 30.0);
   EXPECT_TRUE(f->GetComputeOriginalPointIds());
+  f->SetInputData(cube);
+  f->Update();
+  EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 24); // the defaults split a cube's corners
+  phongvtk_test::CellNormalsOfTheCellsAsGiven(f);
   f->SetFeatureAngle(-5.0);
   EXPECT_EQ(f->GetFeatureAngle(), 0.0);
   f->SetFeatureAngle(200.0);
@@ -1040,6 +1046,7 @@ TEST(Splitting, BadPointIdsAreStillAnErrorNamingTheCell)
   for (int orient = 0; orient < 3; ++orient)
   {
     vtkNew<vtkPolygonNormals> f;
+    phongvtk_test::CellNormalsOfTheCellsAsGiven(f);
     vtkNew<MessageObserver> messages;
     messages->Watch(f);
     f->ComputePointNormalsOn();

@@ -982,6 +982,7 @@ TEST(VisibleAreaOutputs, InputAreaVectorsAreReusedExceptInExact)
 {
   vtkSmartPointer<vtkPolyData> sphere = Sphere(16, 9, 1.0, 0.0);
   vtkNew<vtkPolygonNormals> normals;
+  phongvtk_test::CellNormalsOfTheCellsAsGiven(normals);
   normals->SetInputData(sphere);
   normals->ComputeAreaVectorsOn();
   normals->SetOutputPrecision(vtkAlgorithm::DOUBLE_PRECISION);

@@ -272,6 +272,8 @@ void ConfigureNormals(FuzzedDataProvider& in, vtkPolygonNormals* f)
   f->SetFeatureAngle(in.ConsumeIntegralInRange<int>(0, 180));
   f->SetComputeOriginalPointIds(in.ConsumeBool());
   f->SetOutputPrecision(in.ConsumeIntegralInRange<int>(0, 2));
+  f->SetTriangulateStrips(in.ConsumeBool());
+  f->SetOutputPointsPrecision(in.ConsumeIntegralInRange<int>(0, 2));
 }
 } // namespace
 

@@ -25,7 +25,8 @@ pieces = ExtractSurface(Input=RedistributeDataSet(Input=source))
 ghosts = GhostCellsGenerator(Input=pieces)
 normals = PolygonNormals(Input=ghosts, ComputePointNormals=1, Accuracy=accuracy,
                          PointWeighting=weighting, OutputPrecision="Double",
-                         Splitting=int(splitting), AutoOrientNormals=auto_orient)
+                         Splitting=int(splitting), AutoOrientNormals=auto_orient,
+                         Consistency=0, ComputeCellNormals=1)
 # Each point carries the rank that computed it ("ProcessId"; a piece's points are its own
 # copies, so a cell's rank is its first point's): the test sees that every rank had a piece,
 # and how many ghost cells the pieces had.

@@ -15,9 +15,16 @@ normals = PolygonNormals(Input=sphere)
 # Defaults of the proxy are those of the C++ class.
 vtk_normals = normals.GetClientSideObject()
 assert (vtk_normals.GetAccuracy(), vtk_normals.GetPointWeighting()) == (1, 0)
-assert vtk_normals.GetComputeCellNormals() and not vtk_normals.GetComputePointNormals()
+# vtkPolyDataNormals' defaults (ParaView's Generate Surface Normals has the same).
+assert not vtk_normals.GetComputeCellNormals() and vtk_normals.GetComputePointNormals()
+assert vtk_normals.GetSplitting() and vtk_normals.GetConsistency()
+assert vtk_normals.GetNonManifoldTraversal() and vtk_normals.GetTriangulateStrips()
+assert vtk_normals.GetOutputPointsPrecision() == 2
 assert vtk_normals.GetPieceInvariant() and vtk_normals.GetOutputPrecision() == 0
 # Every option reaches the filter.
+normals.ComputeCellNormals = 1
+normals.TriangulateStrips = 0
+normals.OutputPointsPrecision = "Double"
 normals.Accuracy = "Exact"
 normals.PointWeighting = "Max"
 normals.ComputePointNormals = 1
@@ -28,6 +35,7 @@ normals.OutputPrecision = "Double"
 normals.UpdatePipeline()
 assert vtk_normals.GetAccuracy() == 3 and vtk_normals.GetPointWeighting() == 3
 assert vtk_normals.GetOutputPrecision() == 1
+assert not vtk_normals.GetTriangulateStrips() and vtk_normals.GetOutputPointsPrecision() == 1
 
 out = sm.Fetch(normals)
 points = vtk_to_numpy(out.GetPoints().GetData()).astype(float)

@@ -9,6 +9,7 @@ from vtkmodules.util import numpy_support
 from vtkmodules.vtkCommonCore import vtkCommand, vtkIdList, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkCommonExecutionModel import vtkAlgorithm, vtkPolyDataAlgorithm
+from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 
 from phongvtk import vtkPolygonNormals
@@ -17,8 +18,15 @@ CENTER = (1.0, -2.0, 0.5)
 RADIUS = 3.0
 
 
+#: Cell normals of the cells as given, nothing else: where the tests start from (the defaults,
+#: vtkPolyDataNormals', are tested on their own).
+CELLS_AS_GIVEN = {"ComputeCellNormals": True, "ComputePointNormals": False, "Splitting": False,
+                  "Consistency": False}
+
+
 def sphere_pipeline(**settings):
-    """vtkSphereSource -> vtkPolygonNormals, configured with Set<name>(value) for each setting."""
+    """vtkSphereSource -> vtkPolygonNormals with CELLS_AS_GIVEN, then Set<name>(value) for each
+    setting."""
     source = vtkSphereSource()
     source.SetCenter(*CENTER)
     source.SetRadius(RADIUS)
@@ -26,7 +34,7 @@ def sphere_pipeline(**settings):
     source.SetPhiResolution(32)
     normals = vtkPolygonNormals()
     normals.SetInputConnection(source.GetOutputPort())
-    for name, value in settings.items():
+    for name, value in {**CELLS_AS_GIVEN, **settings}.items():
         getattr(normals, "Set" + name)(value)
     normals.Update()
     return normals.GetOutput()
@@ -71,8 +79,12 @@ def test_defaults():
     f = vtkPolygonNormals()
     assert f.GetAccuracy() == vtkPolygonNormals.DOUBLE
     assert f.GetPointWeighting() == vtkPolygonNormals.AREA
-    assert f.GetComputeCellNormals()
-    assert not f.GetComputePointNormals()
+    vtk = vtkPolyDataNormals()  # its options, under their names and with their defaults
+    for name in ("ComputeCellNormals", "ComputePointNormals", "Splitting", "Consistency",
+                 "AutoOrientNormals", "NonManifoldTraversal", "FlipNormals", "FeatureAngle",
+                 "OutputPointsPrecision"):
+        assert getattr(f, "Get" + name)() == getattr(vtk, "Get" + name)(), name
+    assert f.GetTriangulateStrips()
     assert not f.GetComputeAreaVectors()
     assert not f.GetComputeAreas()
     assert not f.GetComputeNormalStatus()
@@ -129,6 +141,8 @@ def test_source_point_normals_pass_through_when_not_computed():
     source.Update()
     f = vtkPolygonNormals()
     f.SetInputConnection(source.GetOutputPort())
+    f.ComputePointNormalsOff()
+    f.ComputeCellNormalsOn()
     f.Update()
     # vtkSphereSource makes its own point normals; the filter was not asked for any.
     source_normals = source.GetOutput().GetPointData().GetNormals()
@@ -147,6 +161,7 @@ def test_numpy_points_in_numpy_normals_out():
     square.SetPolys(polys)
     f = vtkPolygonNormals()
     f.SetInputData(square)
+    f.ComputeCellNormalsOn()
     f.ComputeAreasOn()
     f.Update()
     cd = f.GetOutput().GetCellData()
@@ -167,7 +182,9 @@ def test_bad_point_ids_report_an_error_and_give_an_empty_output():
     errors = []
     f = vtkPolygonNormals()
     f.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
+    failures = []  # the executive's "returned failure for request"
+    f.GetExecutive().AddObserver(vtkCommand.ErrorEvent, lambda caller, event: failures.append(1))
     f.SetInputData(mesh)
-    f.Update()
-    assert len(errors) == 1
+    assert f.GetExecutive().Update() == 0  # the update fails
+    assert len(errors) == 1 and failures
     assert f.GetOutput().GetNumberOfCells() == 0
