@@ -323,3 +323,12 @@ def test_entry_point_registers_without_importing_phongvtk():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          env=dict(os.environ), check=True).stdout.split()
     assert out == ["24", "True"]
+
+
+def test_strips_become_triangles_as_in_pyvista():
+    strips = pv.Plane(i_resolution=4, j_resolution=3).triangulate().strip()
+    ours = strips.phong.compute_normals()
+    theirs = strips.compute_normals()
+    assert strips.n_strips > 0 and ours.n_strips == 0
+    assert ours.n_cells == theirs.n_cells == 24
+    assert np.all(ours.cell_data["Normals"] == [0.0, 0.0, 1.0])  # the plane faces +z
