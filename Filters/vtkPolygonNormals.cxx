@@ -187,27 +187,26 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
     output->Initialize();
     return 0; // the update fails
   }
+  vtkIdType firstBadCell = -1;
+  bool ok = true;
+  bool validated = false; // every point id checked already
   vtkSmartPointer<vtkPolyData> triangulated;
   if (this->TriangulateStrips && input->GetNumberOfStrips() > 0)
   {
     // Checked first, so that an error names the input's cell, not one of a strip's triangles.
-    const vtkIdType invalid = FirstInvalidCell(input);
-    if (invalid >= 0)
+    firstBadCell = FirstInvalidCell(input);
+    ok = firstBadCell < 0;
+    validated = true;
+    if (ok)
     {
-      vtkErrorMacro("Cell " << invalid << " refers to a point id outside [0, "
-                            << input->GetNumberOfPoints() << "); the output is empty.");
-      output->Initialize();
-      return 0; // the update fails
+      triangulated = phongvtk::StripsAsTriangles(input);
+      input = triangulated;
+      output->ShallowCopy(triangulated);
     }
-    triangulated = phongvtk::StripsAsTriangles(input);
-    input = triangulated;
-    output->ShallowCopy(triangulated);
   }
 
   const phongvtk::PolygonNormalsKernels& kernels = phongvtk::SelectedPolygonNormalsKernels();
   vtkIdType nonFinite = 0;
-  vtkIdType firstBadCell = -1;
-  bool ok = true;
   double progressStart = 0.0;
   vtkSmartPointer<vtkPolyData> source = input;
   // Orientation and splitting first: the normals follow the reordered and split polygons.
@@ -216,7 +215,7 @@ int vtkPolygonNormals::RequestData(vtkInformation* vtkNotUsed(request),
   const bool orient = (this->Consistency || this->AutoOrientNormals || this->FlipNormals) &&
     input->GetNumberOfPolys() > 0;
   const bool split = this->Splitting && this->ComputePointNormals;
-  if (orient && !split)
+  if (ok && orient && !split && !validated)
   {
     // Splitting validates every cell on its first pass (SharpEdges::Decide), before anything
     // reads a polygon's points; reordering alone reads them first.
